@@ -1,0 +1,11 @@
+// The verbs of sonarcarve-cli. Each add*Command registers a CLI11 subcommand whose callback
+// runs it; the exit code of the run is stored in `exit_code`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace sonarcarve::cli {
+
+void addInfoCommand(CLI::App& app, int& exit_code);
+
+}  // namespace sonarcarve::cli

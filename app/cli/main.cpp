@@ -1,0 +1,45 @@
+// sonarcarve-cli: the headless tool. Every verb drives the same core as the GUI.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/commands.h"
+#include "common/error.h"
+
+namespace {
+
+// Verbs that later work fills in; until then they say so and fail.
+void addPendingCommand(CLI::App& app, const std::string& name, const std::string& description,
+                       int& exit_code) {
+  CLI::App* cmd = app.add_subcommand(name, description + " (not implemented yet)");
+  cmd->allow_extras();
+  cmd->callback([name, &exit_code] {
+    std::cerr << "sonarcarve-cli " << name << ": not implemented yet\n";
+    exit_code = 2;
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"SonarCarve: 3D maps of underwater structures from 2D imaging sonar",
+               "sonarcarve-cli"};
+  app.set_version_flag("--version", std::string("sonarcarve-cli ") + SONARCARVE_VERSION);
+  app.require_subcommand(1);
+  int exit_code = 0;
+  sonarcarve::cli::addInfoCommand(app, exit_code);
+  addPendingCommand(app, "simulate", "Simulate a sonar mission with ground truth", exit_code);
+  addPendingCommand(app, "reconstruct", "Carve a 3D map from a mission", exit_code);
+  addPendingCommand(app, "evaluate", "Compare a reconstruction with ground truth", exit_code);
+  addPendingCommand(app, "noise-model", "Learn a noise model from empty-water frames", exit_code);
+  addPendingCommand(app, "import", "Import a vendor sonar log into a mission", exit_code);
+  addPendingCommand(app, "bench", "Measure the engine's speed", exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const sonarcarve::Error& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return exit_code;
+}

@@ -1,0 +1,98 @@
+#include "io/csv_table.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string::npos) {
+    return {};
+  }
+  const auto last = s.find_last_not_of(" \t\r");
+  return s.substr(first, last - first + 1);
+}
+
+std::vector<std::string> splitCells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = line.find(',', start);
+    cells.push_back(trim(line.substr(start, comma - start)));
+    if (comma == std::string::npos) {
+      return cells;
+    }
+    start = comma + 1;
+  }
+}
+
+}  // namespace
+
+CsvTable CsvTable::read(const std::filesystem::path& path) {
+  CsvTable table;
+  table.file_ = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw Error(table.file_, "", "cannot open file (missing or unreadable)");
+  }
+  std::string line;
+  int line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    const std::string content = trim(line);
+    if (content.empty() || content.front() == '#') {
+      continue;
+    }
+    if (line.find('\0') != std::string::npos) {
+      throw Error(table.file_, linePlace(line_number), "binary data in a text file");
+    }
+    auto cells = splitCells(content);
+    if (table.header_.empty()) {
+      table.header_ = std::move(cells);
+      table.header_line_ = line_number;
+      continue;
+    }
+    if (cells.size() != table.header_.size()) {
+      throw Error(table.file_, linePlace(line_number),
+                  "expected " + std::to_string(table.header_.size()) + " values, found " +
+                      std::to_string(cells.size()));
+    }
+    table.rows_.push_back(Row{line_number, std::move(cells)});
+  }
+  if (table.header_.empty()) {
+    throw Error(table.file_, "", "file is empty: expected a header line of column names");
+  }
+  return table;
+}
+
+std::size_t CsvTable::column(const std::string& name) const {
+  for (std::size_t i = 0; i < header_.size(); ++i) {
+    if (header_[i] == name) {
+      return i;
+    }
+  }
+  throw Error(file_, linePlace(header_line_), "missing column '" + name + "'");
+}
+
+const std::string& CsvTable::text(const Row& row, std::size_t column) const {
+  return row.cells.at(column);
+}
+
+double CsvTable::number(const Row& row, std::size_t column) const {
+  const std::string& cell = row.cells.at(column);
+  double value = 0.0;
+  const char* end = cell.data() + cell.size();
+  const auto [ptr, ec] = std::from_chars(cell.data(), end, value);
+  if (cell.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
+    throw Error(file_, linePlace(row.line),
+                "column '" + header_[column] + "': expected a finite number, found '" + cell + "'");
+  }
+  return value;
+}
+
+}  // namespace sonarcarve

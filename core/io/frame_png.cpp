@@ -1,0 +1,78 @@
+#include "io/frame_png.h"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <opencv2/imgcodecs.hpp>
+#include <vector>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+constexpr unsigned char kPngEnd[8] = {'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+}  // namespace
+
+std::string encodeFramePng(const cv::Mat& image, const std::string& what) {
+  if (image.empty() || image.type() != CV_32F) {
+    throw Error(what, "", "expected a non-empty single-channel float image");
+  }
+  cv::Mat counts(image.size(), CV_16U);
+  for (int r = 0; r < image.rows; ++r) {
+    const float* in = image.ptr<float>(r);
+    auto* out = counts.ptr<std::uint16_t>(r);
+    for (int c = 0; c < image.cols; ++c) {
+      const float v = in[c];
+      if (!(v >= 0.0f && v <= 65535.0f)) {
+        throw Error(what, "pixel (" + std::to_string(r) + ", " + std::to_string(c) + ")",
+                    "intensity " + std::to_string(v) + " is NaN or outside 0..65535");
+      }
+      out[c] = static_cast<std::uint16_t>(std::lround(v));
+    }
+  }
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".png", counts, bytes)) {
+    throw Error(what, "", "PNG encoding failed");
+  }
+  return std::string(bytes.begin(), bytes.end());
+}
+
+cv::Mat readFramePng(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw Error(file, "", "cannot open frame image (missing or unreadable)");
+  }
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                   std::istreambuf_iterator<char>());
+  if (bytes.empty()) {
+    throw Error(file, "byte 0", "empty file: expected a PNG image");
+  }
+  if (bytes.size() < sizeof(kPngSignature) ||
+      !std::equal(std::begin(kPngSignature), std::end(kPngSignature), bytes.begin())) {
+    throw Error(file, "byte 0", "not a PNG image (bad signature)");
+  }
+  // libpng decodes a cut-off file as far as it goes; a complete PNG ends with its IEND chunk.
+  if (bytes.size() < 16 || !std::equal(std::begin(kPngEnd), std::end(kPngEnd), bytes.end() - 8)) {
+    throw Error(file, "byte " + std::to_string(bytes.size()),
+                "truncated PNG: expected the IEND chunk at the end of the file");
+  }
+  cv::Mat decoded;
+  try {
+    decoded = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception& e) {
+    throw Error(file, "", std::string("corrupt PNG: ") + e.what());
+  }
+  if (decoded.empty()) {
+    throw Error(file, "", "corrupt PNG: the image data cannot be decoded");
+  }
+  if (decoded.channels() != 1 || (decoded.depth() != CV_8U && decoded.depth() != CV_16U)) {
+    throw Error(file, "", "expected a single-channel 8- or 16-bit PNG");
+  }
+  cv::Mat image;
+  decoded.convertTo(image, CV_32F);
+  return image;
+}
+
+}  // namespace sonarcarve

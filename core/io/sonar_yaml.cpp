@@ -1,0 +1,121 @@
+#include "io/sonar_yaml.h"
+
+#include "common/angles.h"
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+
+BearingTable bearingsFromYaml(const YAML::Node& node, const YamlFields& fields,
+                              const std::string& path) {
+  if (!node.IsMap()) {
+    fields.fail(node, path, "expected a mapping with fov_deg and beams, or table_deg");
+  }
+  try {
+    if (node["table_deg"]) {
+      std::vector<double> centres = fields.numbers(node["table_deg"], path + ".table_deg");
+      for (double& c : centres) {
+        c = degToRad(c);
+      }
+      return BearingTable::fromCentres(std::move(centres));
+    }
+    const double fov = fields.positive(fields.child(node, path, "fov_deg"), path + ".fov_deg");
+    const int beams = fields.positiveInt(fields.child(node, path, "beams"), path + ".beams");
+    return BearingTable::uniform(degToRad(fov), beams);
+  } catch (const Error& e) {
+    if (e.source() == "sonar model") {
+      fields.fail(node, path, e.place() + ": " + e.message());
+    }
+    throw;
+  }
+}
+
+}  // namespace
+
+SonarModel sonarFromYaml(const YAML::Node& node, const YamlFields& fields,
+                         const std::string& path) {
+  const std::string id = fields.text(fields.child(node, path, "id"), path + ".id");
+  const YAML::Node range_node = fields.child(node, path, "range");
+  const std::string rp = path + ".range";
+  RangeBins range;
+  range.min_m = fields.number(fields.child(range_node, rp, "min_m"), rp + ".min_m");
+  if (range.min_m < 0.0) {
+    fields.fail(range_node["min_m"], rp + ".min_m", "expected a number >= 0");
+  }
+  range.resolution_m =
+      fields.positive(fields.child(range_node, rp, "resolution_m"), rp + ".resolution_m");
+  range.count = fields.positiveInt(fields.child(range_node, rp, "bins"), rp + ".bins");
+
+  BearingTable bearings =
+      bearingsFromYaml(fields.child(node, path, "bearings"), fields, path + ".bearings");
+  const YAML::Node aperture_node = fields.child(node, path, "vertical_aperture_deg");
+  const double aperture_deg = fields.positive(aperture_node, path + ".vertical_aperture_deg");
+  if (aperture_deg >= 180.0) {
+    fields.fail(aperture_node, path + ".vertical_aperture_deg", "expected less than 180");
+  }
+  if (node["beam_pattern"]) {
+    const std::string pattern = fields.text(node["beam_pattern"], path + ".beam_pattern");
+    if (pattern != "sinc") {
+      fields.fail(node["beam_pattern"], path + ".beam_pattern", "expected 'sinc' (the only one)");
+    }
+  }
+  try {
+    return SonarModel(id, range, std::move(bearings), degToRad(aperture_deg));
+  } catch (const Error& e) {
+    fields.fail(node, path, e.place() + ": " + e.message());
+  }
+}
+
+void emitSonar(YAML::Emitter& out, const SonarModel& sonar) {
+  out << YAML::BeginMap;
+  out << YAML::Key << "id" << YAML::Value << sonar.id();
+  out << YAML::Key << "range" << YAML::Value << YAML::Flow << YAML::BeginMap;
+  out << YAML::Key << "min_m" << YAML::Value << shortestNumber(sonar.range().min_m);
+  out << YAML::Key << "resolution_m" << YAML::Value << shortestNumber(sonar.range().resolution_m);
+  out << YAML::Key << "bins" << YAML::Value << sonar.range().count;
+  out << YAML::EndMap;
+  const BearingTable& b = sonar.bearings();
+  out << YAML::Key << "bearings" << YAML::Value;
+  if (b.isUniform()) {
+    out << YAML::Flow << YAML::BeginMap;
+    out << YAML::Key << "fov_deg" << YAML::Value << shortestDegrees(b.fieldOfView());
+    out << YAML::Key << "beams" << YAML::Value << b.count();
+    out << YAML::EndMap;
+  } else {
+    out << YAML::BeginMap << YAML::Key << "table_deg" << YAML::Value << YAML::Flow
+        << YAML::BeginSeq;
+    for (double c : b.centres()) {
+      out << shortestDegrees(c);
+    }
+    out << YAML::EndSeq << YAML::EndMap;
+  }
+  out << YAML::Key << "vertical_aperture_deg" << YAML::Value
+      << shortestDegrees(sonar.verticalAperture());
+  out << YAML::Key << "beam_pattern" << YAML::Value << "sinc";
+  out << YAML::EndMap;
+}
+
+Mounting mountingFromYaml(const YAML::Node& node, const YamlFields& fields,
+                          const std::string& path) {
+  Mounting m;
+  const auto t =
+      fields.numbers(fields.child(node, path, "translation_m"), path + ".translation_m", 3);
+  m.translation_m = Eigen::Vector3d(t[0], t[1], t[2]);
+  const auto r = fields.numbers(fields.child(node, path, "roll_pitch_yaw_deg"),
+                                path + ".roll_pitch_yaw_deg", 3);
+  m.rpy = RollPitchYaw{degToRad(r[0]), degToRad(r[1]), degToRad(r[2])};
+  return m;
+}
+
+void emitMounting(YAML::Emitter& out, const Mounting& m) {
+  out << YAML::BeginMap;
+  out << YAML::Key << "translation_m" << YAML::Value << YAML::Flow << YAML::BeginSeq
+      << shortestNumber(m.translation_m.x()) << shortestNumber(m.translation_m.y())
+      << shortestNumber(m.translation_m.z()) << YAML::EndSeq;
+  out << YAML::Key << "roll_pitch_yaw_deg" << YAML::Value << YAML::Flow << YAML::BeginSeq
+      << shortestDegrees(m.rpy.roll_rad) << shortestDegrees(m.rpy.pitch_rad)
+      << shortestDegrees(m.rpy.yaw_rad) << YAML::EndSeq;
+  out << YAML::EndMap;
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,45 @@
+// Reading typed fields out of a YAML document with errors that name the file, the line and
+// the key, e.g. "mission.yaml: line 7: sonar.range.resolution_m: expected a positive number".
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+#include <string>
+#include <vector>
+
+namespace sonarcarve {
+
+class YamlFields {
+ public:
+  explicit YamlFields(std::string file) : file_(std::move(file)) {}
+
+  /// Parses a whole file; throws Error if it is missing, empty or not valid YAML.
+  YAML::Node load() const;
+
+  /// Child `key` of the mapping `node` (whose dotted name is `path`); throws if missing.
+  YAML::Node child(const YAML::Node& node, const std::string& path, const std::string& key) const;
+  double number(const YAML::Node& node, const std::string& path) const;
+  double positive(const YAML::Node& node, const std::string& path) const;
+  int positiveInt(const YAML::Node& node, const std::string& path) const;
+  std::string text(const YAML::Node& node, const std::string& path) const;
+  /// A sequence of exactly `size` numbers (any size when `size` is 0).
+  std::vector<double> numbers(const YAML::Node& node, const std::string& path,
+                              std::size_t size = 0) const;
+
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& path,
+                         const std::string& expected) const;
+
+ private:
+  std::string file_;
+};
+
+}  // namespace sonarcarve
+
+namespace sonarcarve {
+/// The shortest text that reads back as exactly `value` ("0.02", not "0.0200000000000000004").
+std::string shortestNumber(double value);
+}  // namespace sonarcarve
+
+namespace sonarcarve {
+/// The shortest text in degrees that reads back (through degToRad) as exactly `angle_rad`.
+std::string shortestDegrees(double angle_rad);
+}  // namespace sonarcarve

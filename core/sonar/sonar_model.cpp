@@ -1,0 +1,69 @@
+#include "sonar/sonar_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+
+Eigen::Vector3d pointFromPolar(const Polar& polar) {
+  const double c = std::cos(polar.elevation_rad);
+  return polar.range_m * Eigen::Vector3d(c * std::cos(polar.bearing_rad),
+                                         c * std::sin(polar.bearing_rad),
+                                         -std::sin(polar.elevation_rad));
+}
+
+Polar polarFromPoint(const Eigen::Vector3d& p_sonar) {
+  Polar polar;
+  polar.range_m = p_sonar.norm();
+  if (polar.range_m == 0.0) {
+    return polar;
+  }
+  polar.bearing_rad = std::atan2(p_sonar.y(), p_sonar.x());
+  polar.elevation_rad = std::asin(std::clamp(-p_sonar.z() / polar.range_m, -1.0, 1.0));
+  return polar;
+}
+
+SonarModel::SonarModel(std::string id, RangeBins range, BearingTable bearings,
+                       double vertical_aperture_rad)
+    : id_(std::move(id)),
+      range_(range),
+      bearings_(std::move(bearings)),
+      beam_pattern_(vertical_aperture_rad) {
+  if (range_.count < 1) {
+    throw Error("sonar model", "range", "expected at least one range bin");
+  }
+  if (!(range_.resolution_m > 0.0) || !std::isfinite(range_.resolution_m)) {
+    throw Error("sonar model", "range", "expected a positive range resolution");
+  }
+  if (!(range_.min_m >= 0.0) || !std::isfinite(range_.min_m)) {
+    throw Error("sonar model", "range", "expected a minimum range >= 0");
+  }
+  if (bearings_.leftEdge() <= -std::numbers::pi || bearings_.rightEdge() >= std::numbers::pi) {
+    throw Error("sonar model", "bearings", "field of view must lie within (-180, 180) degrees");
+  }
+}
+
+Polar SonarModel::pixelCentre(const Pixel& pixel) const {
+  return Polar{range_.centre(pixel.row), bearings_.centre(pixel.col), 0.0};
+}
+
+std::optional<Pixel> SonarModel::pixelOf(const Polar& polar) const {
+  if (std::abs(polar.elevation_rad) > 0.5 * verticalAperture()) {
+    return std::nullopt;
+  }
+  const auto row = range_.binOf(polar.range_m);
+  const auto col = bearings_.beamOf(polar.bearing_rad);
+  if (!row || !col) {
+    return std::nullopt;
+  }
+  return Pixel{*row, *col};
+}
+
+std::optional<Pixel> SonarModel::pixelOf(const Eigen::Vector3d& p_sonar) const {
+  return pixelOf(polarFromPoint(p_sonar));
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,67 @@
+// SonarModel: the geometry of a 2D imaging sonar (range bins, bearing table, vertical aperture,
+// elevation beam pattern) and the conversions between a pixel, polar coordinates and 3D points
+// in the sonar frame.
+//
+// Sonar frame (docs/conventions.md): x forward along the boresight, y to starboard, z down.
+// Bearing phi is positive to starboard; elevation theta is positive up (towards -z):
+//   p = r * (cos(theta) cos(phi), cos(theta) sin(phi), -sin(theta)).
+// A pixel (row, col) is range bin `row` (near to far) and beam `col` (port to starboard).
+// Units: metres and radians. Immutable after construction; safe to share between threads.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+
+#include "sonar/beam_pattern.h"
+#include "sonar/bearing_table.h"
+#include "sonar/range_bins.h"
+
+namespace sonarcarve {
+
+struct Polar {
+  double range_m = 0.0;
+  double bearing_rad = 0.0;
+  double elevation_rad = 0.0;
+};
+
+struct Pixel {
+  int row = 0;  ///< range bin, 0 = nearest
+  int col = 0;  ///< beam, 0 = most port
+  bool operator==(const Pixel&) const = default;
+};
+
+/// Polar coordinates -> point in the sonar frame.
+Eigen::Vector3d pointFromPolar(const Polar& polar);
+/// Point in the sonar frame -> polar coordinates (range 0 gives bearing 0, elevation 0).
+Polar polarFromPoint(const Eigen::Vector3d& p_sonar);
+
+class SonarModel {
+ public:
+  /// Throws Error if the geometry is invalid (no bins, non-positive resolution, ...).
+  SonarModel(std::string id, RangeBins range, BearingTable bearings, double vertical_aperture_rad);
+
+  const std::string& id() const { return id_; }
+  const RangeBins& range() const { return range_; }
+  const BearingTable& bearings() const { return bearings_; }
+  const BeamPattern& beamPattern() const { return beam_pattern_; }
+  double verticalAperture() const { return beam_pattern_.aperture(); }
+  int rows() const { return range_.count; }
+  int cols() const { return bearings_.count(); }
+
+  /// Range and bearing at the centre of `pixel`, at elevation 0.
+  Polar pixelCentre(const Pixel& pixel) const;
+  /// The pixel that images a point, or nothing if the point lies outside the range window,
+  /// the field of view or the vertical aperture (|elevation| > aperture / 2).
+  std::optional<Pixel> pixelOf(const Eigen::Vector3d& p_sonar) const;
+  /// The pixel of polar coordinates, same rules as pixelOf.
+  std::optional<Pixel> pixelOf(const Polar& polar) const;
+
+ private:
+  std::string id_;
+  RangeBins range_;
+  BearingTable bearings_;
+  BeamPattern beam_pattern_;
+};
+
+}  // namespace sonarcarve

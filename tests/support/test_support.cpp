@@ -1,0 +1,62 @@
+#include "support/test_support.h"
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "common/angles.h"
+
+namespace sonarcarve::test {
+
+ScratchDir::ScratchDir() {
+  std::random_device rd;
+  path_ = std::filesystem::temp_directory_path() /
+          ("sonarcarve-test-" + std::to_string(rd()) + std::to_string(rd()));
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+std::filesystem::path exampleMission() {
+  return std::filesystem::path(SONARCARVE_RESOURCE_DIR) / "example_mission";
+}
+
+std::filesystem::path copyExampleMission(const std::filesystem::path& dir,
+                                         const std::string& name) {
+  const auto target = dir / name;
+  std::filesystem::copy(exampleMission(), target, std::filesystem::copy_options::recursive);
+  return target;
+}
+
+SonarModel paperSonar() {
+  return SonarModel("paper", RangeBins{0.0, 0.02, 500}, BearingTable::uniform(degToRad(130), 650),
+                    degToRad(20));
+}
+
+SonarModel nonUniformSonar() {
+  std::vector<double> centres;
+  for (int j = 0; j < 256; ++j) {
+    const double u = -1.0 + 2.0 * (j + 0.5) / 256.0;  // (-1, 1)
+    centres.push_back(std::asin(u * std::sin(degToRad(30))));
+  }
+  return SonarModel("nonuniform", RangeBins{0.1, 0.0028421889710794315, 703},
+                    BearingTable::fromCentres(centres), degToRad(20));
+}
+
+std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+}
+
+}  // namespace sonarcarve::test

@@ -1,0 +1,39 @@
+// Helpers shared by the tests: scratch folders, the example mission, small sonar models.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "sonar/sonar_model.h"
+
+namespace sonarcarve::test {
+
+/// A fresh empty folder under the system temp dir, removed when the object dies.
+class ScratchDir {
+ public:
+  ScratchDir();
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// The example mission shipped in resources/.
+std::filesystem::path exampleMission();
+/// Copies the example mission into `dir`/name and returns the copy's folder.
+std::filesystem::path copyExampleMission(const std::filesystem::path& dir,
+                                         const std::string& name = "mission");
+
+/// The seed paper's sonar: 2 cm bins to 10 m, 130 deg in 650 beams, 20 deg aperture.
+SonarModel paperSonar();
+/// A sonar with a non-uniform table, like the Oculus': 256 beams over +-30 deg, spaced
+/// more finely at the centre.
+SonarModel nonUniformSonar();
+
+std::string readText(const std::filesystem::path& path);
+void writeText(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace sonarcarve::test
