@@ -7,5 +7,8 @@
 namespace sonarcarve::cli {
 
 void addInfoCommand(CLI::App& app, int& exit_code);
+void addSimulateCommand(CLI::App& app, int& exit_code);
+void addBenchCommand(CLI::App& app, int& exit_code);
+void addFrameCommand(CLI::App& app, int& exit_code);
 
 }  // namespace sonarcarve::cli

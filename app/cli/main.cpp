@@ -27,12 +27,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = 0;
   sonarcarve::cli::addInfoCommand(app, exit_code);
-  addPendingCommand(app, "simulate", "Simulate a sonar mission with ground truth", exit_code);
+  sonarcarve::cli::addFrameCommand(app, exit_code);
+  sonarcarve::cli::addSimulateCommand(app, exit_code);
   addPendingCommand(app, "reconstruct", "Carve a 3D map from a mission", exit_code);
   addPendingCommand(app, "evaluate", "Compare a reconstruction with ground truth", exit_code);
   addPendingCommand(app, "noise-model", "Learn a noise model from empty-water frames", exit_code);
   addPendingCommand(app, "import", "Import a vendor sonar log into a mission", exit_code);
-  addPendingCommand(app, "bench", "Measure the engine's speed", exit_code);
+  sonarcarve::cli::addBenchCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

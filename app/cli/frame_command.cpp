@@ -1,0 +1,64 @@
+// `sonarcarve-cli frame MISSION --index N --polar P.png --fan F.png`: pictures of one frame.
+#include <iostream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "cli/commands.h"
+#include "common/error.h"
+#include "io/atomic_file.h"
+#include "io/mission.h"
+#include "sonar/fan_image.h"
+
+namespace sonarcarve::cli {
+namespace {
+
+void writePng(const cv::Mat& picture, const std::string& path) {
+  replaceFileAtomically(path, [&](const std::filesystem::path& tmp) {
+    if (!cv::imwrite(tmp.string(), picture)) {
+      throw Error(path, "", "cannot write PNG");
+    }
+  });
+}
+
+}  // namespace
+
+void addFrameCommand(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("frame", "Draw one frame of a mission as PNG pictures");
+  struct Options {
+    std::string mission, polar, fan;
+    std::size_t index = 0;
+    float low = -1.0f, high = -1.0f;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("mission", o->mission, "Mission folder")->required();
+  cmd->add_option("--index", o->index, "Frame index (0-based)")->capture_default_str();
+  cmd->add_option("--polar", o->polar, "Write the polar image here (PNG)");
+  cmd->add_option("--fan", o->fan, "Write the fan in true geometry here (PNG)");
+  cmd->add_option("--low", o->low, "Intensity shown black (default: 1st percentile)");
+  cmd->add_option("--high", o->high, "Intensity shown white (default: 99.5th percentile)");
+  cmd->callback([o, &exit_code] {
+    const Mission mission = readMission(o->mission);
+    if (o->index >= mission.frames.size()) {
+      throw Error(o->mission, "frame " + std::to_string(o->index),
+                  "no such frame: the mission has " + std::to_string(mission.frames.size()));
+    }
+    const Frame frame = loadFrame(mission, o->index);
+    DisplayWindow window = DisplayWindow::fromPercentiles(frame.image);
+    if (o->low >= 0.0f) {
+      window.low = o->low;
+    }
+    if (o->high >= 0.0f) {
+      window.high = o->high;
+    }
+    if (!o->polar.empty()) {
+      writePng(polarPicture(frame.image, window), o->polar);
+    }
+    if (!o->fan.empty()) {
+      writePng(fanPicture(frame.image, mission.sonar, window), o->fan);
+    }
+    std::cout << "frame " << o->index << " at t = " << frame.time_s << " s, intensity window "
+              << window.low << " .. " << window.high << "\n";
+    exit_code = 0;
+  });
+}
+
+}  // namespace sonarcarve::cli

@@ -1,0 +1,119 @@
+// `sonarcarve-cli simulate`: a simulated mission with ground truth.
+#include <iostream>
+
+#include "cli/commands.h"
+#include "cli/terminal_progress.h"
+#include "common/angles.h"
+#include "common/error.h"
+#include "sim/demo_scenes.h"
+#include "sim/scene_io.h"
+#include "sim/simulation_run.h"
+
+namespace sonarcarve::cli {
+namespace {
+
+struct SimulateOptions {
+  std::string scene;
+  std::string trajectory = "auto";
+  std::string noise = "default";
+  std::string out;
+  double standoff_m = 4.5;
+  double step_m = 0.1;
+  int max_frames = -1;
+  std::uint64_t seed = 1;
+  double nav_position_sigma_m = 0.0;
+  double nav_attitude_sigma_deg = 0.0;
+  double elevation_step_deg = 0.1;
+  int rays_per_beam = 2;
+  float reflectivity = 0.8f;
+  bool empty_water = false;
+  bool force = false;
+};
+
+NoiseSpec noiseFrom(const std::string& choice, std::uint64_t seed) {
+  NoiseSpec spec;
+  if (choice == "none") {
+    spec = NoiseSpec::none();
+  } else if (choice != "default") {
+    spec = NoiseSpec::fromYamlFile(choice);
+  }
+  spec.seed = seed;
+  return spec;
+}
+
+int runSimulate(const SimulateOptions& o) {
+  const std::filesystem::path out(o.out);
+  if (std::filesystem::exists(out / "mission.yaml") && !o.force) {
+    throw Error(out.string(), "", "already holds a mission; choose another --out or add --force");
+  }
+  TrajectorySpec trajectory;
+  trajectory.kind = o.trajectory == "auto"
+                        ? (o.scene == "seabed-objects" ? "lawnmower" : "vertical")
+                        : o.trajectory;
+  trajectory.standoff_m = o.standoff_m;
+  trajectory.step_m = o.step_m;
+  ImagingSettings imaging;
+  imaging.elevation_step_rad = degToRad(o.elevation_step_deg);
+  imaging.rays_per_beam = o.rays_per_beam;
+  const SimulationRequest request{
+      isDemoScene(o.scene) ? makeDemoScene(o.scene) : loadSceneMesh(o.scene, o.reflectivity),
+      o.scene,
+      paperSonar(),
+      trajectory,
+      imaging,
+      noiseFrom(o.noise, o.seed),
+      NavErrorSpec{o.nav_position_sigma_m, o.nav_attitude_sigma_deg, o.seed},
+      o.empty_water,
+      o.max_frames >= 0 ? std::optional<int>(o.max_frames) : std::nullopt,
+      out};
+
+  TerminalProgress progress;
+  const SimulationResult result = runSimulation(request, progress);
+  progress.finish();
+  std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
+            << result.frames_written << " frames of '" << request.scene.name << "' ("
+            << request.trajectory.kind << ") to " << out.string() << "; " << result.visible_points
+            << " visible surface points\n";
+  return result.cancelled ? 130 : 0;
+}
+
+}  // namespace
+
+void addSimulateCommand(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("simulate", "Simulate a sonar mission with ground truth");
+  auto o = std::make_shared<SimulateOptions>();
+  cmd->add_option(
+         "--scene", o->scene,
+         "riser | jacket-node | seabed-objects | mesh file (STL, OBJ, PLY) in world NED metres")
+      ->required();
+  cmd->add_option("--trajectory", o->trajectory,
+                  "vertical | orbit | lawnmower | navigation CSV of vehicle poses; auto picks the "
+                  "scene's usual one")
+      ->capture_default_str();
+  cmd->add_option("--noise", o->noise, "none | default | noise YAML file")->capture_default_str();
+  cmd->add_option("--out", o->out, "Mission folder to write")->required();
+  cmd->add_option("--standoff", o->standoff_m, "Distance from the sonar to the structure's axis, m")
+      ->capture_default_str();
+  cmd->add_option("--step", o->step_m, "Distance between frames, m")->capture_default_str();
+  cmd->add_option("--max-frames", o->max_frames, "Stop after this many frames");
+  cmd->add_option("--seed", o->seed, "Seed of the noise and navigation error")
+      ->capture_default_str();
+  cmd->add_option("--nav-error-position", o->nav_position_sigma_m,
+                  "Random-walk step of the recorded position per frame, m")
+      ->capture_default_str();
+  cmd->add_option("--nav-error-attitude", o->nav_attitude_sigma_deg,
+                  "Random-walk step of the recorded attitude per frame, deg")
+      ->capture_default_str();
+  cmd->add_option("--elevation-step", o->elevation_step_deg, "Ray spacing in elevation, deg")
+      ->capture_default_str();
+  cmd->add_option("--rays-per-beam", o->rays_per_beam, "Rays across each beam")
+      ->capture_default_str();
+  cmd->add_option("--reflectivity", o->reflectivity, "Reflectivity of a loaded mesh, 0..1")
+      ->capture_default_str();
+  cmd->add_flag("--empty-water", o->empty_water,
+                "Frames of empty water (noise only), to learn a noise model from");
+  cmd->add_flag("--force", o->force, "Overwrite a mission already in --out");
+  cmd->callback([o, &exit_code] { exit_code = runSimulate(*o); });
+}
+
+}  // namespace sonarcarve::cli

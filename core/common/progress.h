@@ -1,0 +1,38 @@
+// Progress and cancellation for long work in the Qt-free core. The GUI implements it with
+// queued signals, the CLI with a terminal line; the engine calls it between frames and inside
+// long loops. Implementations must be thread safe: workers may call from any thread.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <string>
+
+namespace sonarcarve {
+
+class Progress {
+ public:
+  virtual ~Progress() = default;
+  /// `done` of `total` units of the step named `stage` are finished.
+  virtual void report(const std::string& stage, std::size_t done, std::size_t total) = 0;
+  /// True once the user asked to stop; the engine then stops at the next check.
+  virtual bool cancelled() const = 0;
+};
+
+/// Progress that reports nothing and is cancelled only through cancel().
+class SilentProgress : public Progress {
+ public:
+  void report(const std::string&, std::size_t, std::size_t) override {}
+  bool cancelled() const override { return cancelled_.load(std::memory_order_relaxed); }
+  void cancel() { cancelled_.store(true, std::memory_order_relaxed); }
+
+ private:
+  std::atomic<bool> cancelled_{false};
+};
+
+/// Thrown by engine steps that stop because Progress::cancelled() became true.
+class Cancelled : public std::exception {
+ public:
+  const char* what() const noexcept override { return "cancelled"; }
+};
+
+}  // namespace sonarcarve

@@ -1,0 +1,50 @@
+// ThreadPool: a fixed set of worker threads that run a parallel loop and park cheaply between
+// loops (a condition variable, not OpenMP's spin-then-sleep, which costs milliseconds to
+// wake). One parallelFor runs at a time per pool; it is not reentrant.
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace sonarcarve {
+
+class ThreadPool {
+ public:
+  /// `threads` workers in all, the calling thread included; 0 means hardware concurrency.
+  explicit ThreadPool(unsigned threads = 0);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  unsigned size() const { return static_cast<unsigned>(workers_.size()) + 1; }
+
+  /// Calls body(begin, end) on disjoint chunks covering [0, count), in parallel, and returns
+  /// when all are done. Chunks are handed out dynamically, `grain` items at a time.
+  void parallelFor(std::size_t count, std::size_t grain,
+                   const std::function<void(std::size_t, std::size_t)>& body);
+
+  /// A pool shared by the engine, sized to the machine.
+  static ThreadPool& shared();
+
+ private:
+  void workerLoop();
+  void runChunks();
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::condition_variable done_;
+  const std::function<void(std::size_t, std::size_t)>* body_ = nullptr;
+  std::size_t count_ = 0;
+  std::size_t grain_ = 1;
+  std::size_t next_ = 0;
+  std::size_t generation_ = 0;
+  unsigned busy_ = 0;
+  bool stopping_ = false;
+};
+
+}  // namespace sonarcarve

@@ -1,0 +1,151 @@
+#include "sim/demo_scenes.h"
+
+#include <vtkCubeSource.h>
+#include <vtkLineSource.h>
+#include <vtkPlaneSource.h>
+#include <vtkSphereSource.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkTubeFilter.h>
+#include <cmath>
+#include <numbers>
+
+#include "common/error.h"
+#include "sim/vtk_mesh.h"
+
+namespace sonarcarve {
+namespace {
+
+// A capped cylinder between two points.
+Scene tube(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius, int sides,
+           float reflectivity) {
+  auto line = vtkSmartPointer<vtkLineSource>::New();
+  line->SetPoint1(a.data());
+  line->SetPoint2(b.data());
+  auto tube = vtkSmartPointer<vtkTubeFilter>::New();
+  tube->SetInputConnection(line->GetOutputPort());
+  tube->SetRadius(radius);
+  tube->SetNumberOfSides(sides);
+  tube->CappingOn();
+  tube->Update();
+  return sceneFromPolyData(tube->GetOutput(), reflectivity, "tube");
+}
+
+Scene sphere(const Eigen::Vector3d& centre, double radius, float reflectivity) {
+  auto s = vtkSmartPointer<vtkSphereSource>::New();
+  s->SetCenter(centre.data());
+  s->SetRadius(radius);
+  s->SetThetaResolution(64);
+  s->SetPhiResolution(32);
+  s->Update();
+  return sceneFromPolyData(s->GetOutput(), reflectivity, "sphere");
+}
+
+// A box of `size` (north, east, down extents) centred at `centre`, turned by `yaw_deg`.
+Scene box(const Eigen::Vector3d& centre, const Eigen::Vector3d& size, double yaw_deg,
+          float reflectivity) {
+  auto cube = vtkSmartPointer<vtkCubeSource>::New();
+  cube->SetXLength(size.x());
+  cube->SetYLength(size.y());
+  cube->SetZLength(size.z());
+  auto transform = vtkSmartPointer<vtkTransform>::New();
+  transform->Translate(centre.data());
+  transform->RotateZ(yaw_deg);
+  auto filter = vtkSmartPointer<vtkTransformPolyDataFilter>::New();
+  filter->SetInputConnection(cube->GetOutputPort());
+  filter->SetTransform(transform);
+  filter->Update();
+  return sceneFromPolyData(filter->GetOutput(), reflectivity, "box");
+}
+
+// A square seabed of side `size` centred under `centre`, sloping down towards north.
+Scene seabed(const Eigen::Vector3d& centre, double size, double slope_deg, int resolution,
+             float reflectivity) {
+  const double half = 0.5 * size;
+  const double drop = half * std::tan(slope_deg * std::numbers::pi / 180.0);
+  auto plane = vtkSmartPointer<vtkPlaneSource>::New();
+  plane->SetOrigin(centre.x() - half, centre.y() - half, centre.z() - drop);
+  plane->SetPoint1(centre.x() + half, centre.y() - half, centre.z() + drop);
+  plane->SetPoint2(centre.x() - half, centre.y() + half, centre.z() - drop);
+  plane->SetResolution(resolution, resolution);
+  plane->Update();
+  return sceneFromPolyData(plane->GetOutput(), reflectivity, "seabed");
+}
+
+Scene riser() {
+  Scene scene;
+  scene.name = "riser";
+  scene.append(seabed({0, 0, 20.0}, 30.0, 0.0, 1, 0.35f));
+  scene.append(tube({0, 0, 9.5}, {0, 0, 20.0}, 0.2, 48, 0.8f));
+  for (double top : {10.4, 11.5, 12.6}) {
+    scene.append(tube({0, 0, top}, {0, 0, top + 0.8}, 0.45, 64, 0.9f));
+  }
+  // Tie-back cables from the riser at 14.5 m down to the seabed, towards the south-east and
+  // south-west, so the inspecting vehicle (south of the riser) sees them at both sides.
+  for (double east : {5.2, -5.2}) {
+    scene.append(tube({0, 0, 14.5}, {-3.0, east, 20.0}, 0.05, 16, 0.6f));
+  }
+  scene.target = {Eigen::Vector3d(0, 0, 15.0), 9.5, 20.0, 20.0};
+  return scene;
+}
+
+Scene jacketNode() {
+  Scene scene;
+  scene.name = "jacket-node";
+  scene.append(tube({0, 0, 10.0}, {0, 0, 20.0}, 0.4, 48, 0.8f));
+  scene.append(tube({0, 0, 14.2}, {0, 0, 15.8}, 0.55, 48, 0.85f));
+  const Eigen::Vector3d node(0, 0, 15.0);
+  scene.append(tube(node, {0, 5.0, 15.0}, 0.22, 32, 0.8f));     // horizontal, east
+  scene.append(tube(node, {0, -4.0, 11.5}, 0.22, 32, 0.8f));    // up to the west
+  scene.append(tube(node, {0, 3.5, 19.0}, 0.22, 32, 0.8f));     // down to the east
+  scene.append(tube(node, {3.0, -3.0, 16.5}, 0.22, 32, 0.8f));  // away, north-west
+  scene.target = {Eigen::Vector3d(0, 0, 15.0), 10.0, 20.0, 0.0};
+  return scene;
+}
+
+Scene seabedObjects() {
+  Scene scene;
+  scene.name = "seabed-objects";
+  const double slope = 3.0;
+  const auto floor_at = [&](double north) {
+    return 20.0 + north * std::tan(slope * std::numbers::pi / 180.0);
+  };
+  scene.append(seabed({0, 0, 20.0}, 24.0, slope, 48, 0.3f));
+  scene.append(box({-2.0, -1.5, floor_at(-2.0) - 0.3}, {1.2, 0.8, 0.6}, 0.0, 0.9f));
+  scene.append(box({1.5, 2.0, floor_at(1.5) - 0.4}, {0.8, 0.8, 0.8}, 30.0, 0.9f));
+  scene.append(
+      tube({2.0, -3.0, floor_at(2.0) - 0.3}, {2.0, -1.0, floor_at(2.0) - 0.3}, 0.3, 32, 0.8f));
+  scene.append(sphere({-1.5, 2.5, floor_at(-1.5) - 0.5}, 0.5, 0.85f));
+  scene.target = {Eigen::Vector3d(0, 0, 20.0), 19.0, 20.0, 20.0};
+  return scene;
+}
+
+}  // namespace
+
+std::vector<std::string> demoSceneNames() {
+  return {"riser", "jacket-node", "seabed-objects"};
+}
+
+bool isDemoScene(const std::string& name) {
+  for (const auto& n : demoSceneNames()) {
+    if (n == name) {
+      return true;
+    }
+  }
+  return false;
+}
+
+Scene makeDemoScene(const std::string& name) {
+  if (name == "riser") {
+    return riser();
+  }
+  if (name == "jacket-node") {
+    return jacketNode();
+  }
+  if (name == "seabed-objects") {
+    return seabedObjects();
+  }
+  throw Error("scene", name, "unknown demo scene: expected riser, jacket-node or seabed-objects");
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,20 @@
+// Demo scenes built in code, in the world NED frame (metres), each with its inspection target:
+//   riser           a vertical pipeline of 10.5 m, 0.4 m diameter, three buoyancy modules
+//                   near the top and two tie-back cables running down to the seabed at 20 m
+//   jacket-node     a 0.8 m leg with a node can and four 0.44 m braces at several angles
+//   seabed-objects  two boxes, a lying cylinder and a sphere on a seabed sloping 3 degrees
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/scene.h"
+
+namespace sonarcarve {
+
+std::vector<std::string> demoSceneNames();
+bool isDemoScene(const std::string& name);
+/// Throws Error for an unknown name.
+Scene makeDemoScene(const std::string& name);
+
+}  // namespace sonarcarve

@@ -1,0 +1,42 @@
+// Sonar image noise, realistic and reproducible from a seed:
+//  - background: every pixel gets a Rayleigh-distributed amplitude (the envelope of complex
+//    Gaussian reverberation) whose mean follows a range- and bearing-dependent level: stronger
+//    near the sonar (near-field reverberation) and towards the edges of the fan;
+//  - speckle on returns: each return is multiplied by a Gamma variate of mean 1 and shape
+//    `looks` (fully developed speckle averaged over `looks` independent looks).
+// An empty-water frame is the background alone: the frames a noise model is learned from.
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "sonar/sonar_model.h"
+
+namespace sonarcarve {
+
+struct NoiseSpec {
+  bool enabled = true;
+  double background_mean = 30.0;    ///< mean background amplitude at far range, centre beam
+  double near_range_boost = 2.0;    ///< extra background at zero range, as a factor
+  double near_range_scale_m = 1.5;  ///< e-folding range of the near-range boost
+  double edge_boost = 0.6;          ///< extra background at the edge of the fan, as a factor
+  double speckle_looks = 4.0;       ///< Gamma shape of the speckle on returns (>0)
+  std::uint64_t seed = 1;
+
+  static NoiseSpec none();
+  /// Reads a noise YAML file (keys as the fields above); throws Error naming file and line.
+  static NoiseSpec fromYamlFile(const std::string& path);
+  std::string toYaml() const;
+};
+
+/// Mean background amplitude of a pixel under `spec` (what a noise model should learn).
+double backgroundMean(const NoiseSpec& spec, const SonarModel& sonar, int row, int col);
+
+/// Adds noise to a noise-free image, in place, drawing from a stream fixed by the spec's seed
+/// and `frame_index` (the same seed and index give the same noise). Values are clamped to
+/// [0, 65535], the range frames are stored in.
+void addNoise(cv::Mat& image, const NoiseSpec& spec, const SonarModel& sonar,
+              std::uint64_t frame_index);
+
+}  // namespace sonarcarve

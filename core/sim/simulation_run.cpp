@@ -1,0 +1,117 @@
+#include "sim/simulation_run.h"
+
+#include <sstream>
+
+#include "common/angles.h"
+#include "common/error.h"
+#include "io/atomic_file.h"
+#include "io/mission_writer.h"
+#include "io/nav_csv.h"
+#include "io/yaml_fields.h"
+#include "sim/ray_caster.h"
+#include "sim/scene_io.h"
+#include "sim/visible_surface.h"
+
+namespace sonarcarve {
+namespace {
+
+std::string settingsYaml(const SimulationRequest& r, std::size_t frames) {
+  std::ostringstream out;
+  const auto& t = r.trajectory;
+  out << "# Settings this mission was simulated with (sonarcarve-cli simulate).\n"
+      << "scene: " << r.scene_source << "\n"
+      << "empty_water: " << (r.empty_water ? "true" : "false") << "\n"
+      << "frames: " << frames << "\n"
+      << "trajectory:\n"
+      << "  kind: " << t.kind << "\n"
+      << "  standoff_m: " << shortestNumber(t.standoff_m) << "\n"
+      << "  step_m: " << shortestNumber(t.step_m) << "\n"
+      << "  speed_mps: " << shortestNumber(t.speed_mps) << "\n"
+      << "  altitude_m: " << shortestNumber(t.altitude_m) << "\n"
+      << "  line_spacing_m: " << shortestNumber(t.line_spacing_m) << "\n"
+      << "  tilt_deg: " << shortestNumber(t.tilt_deg) << "\n"
+      << "imaging:\n"
+      << "  elevation_step_deg: " << shortestDegrees(r.imaging.elevation_step_rad) << "\n"
+      << "  rays_per_beam: " << r.imaging.rays_per_beam << "\n"
+      << "  gain: " << shortestNumber(r.imaging.gain) << "\n"
+      << "  spreading_exponent: " << shortestNumber(r.imaging.spreading_exponent) << "\n"
+      << "  tvg_exponent: " << shortestNumber(r.imaging.tvg_exponent) << "\n"
+      << "navigation_error:\n"
+      << "  position_sigma_m: " << shortestNumber(r.nav_error.position_sigma_m) << "\n"
+      << "  attitude_sigma_deg: " << shortestNumber(r.nav_error.attitude_sigma_deg) << "\n"
+      << "  seed: " << r.nav_error.seed << "\n"
+      << "noise:\n";
+  std::istringstream noise(r.noise.toYaml());
+  for (std::string line; std::getline(noise, line);) {
+    out << "  " << line << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace
+
+SonarModel paperSonar(const std::string& id) {
+  return SonarModel(id, RangeBins{0.0, 0.02, 500}, BearingTable::uniform(degToRad(130.0), 650),
+                    degToRad(20.0));
+}
+
+SimulationResult runSimulation(const SimulationRequest& request, Progress& progress) {
+  const Trajectory trajectory = makeTrajectory(request.trajectory, request.scene.target);
+  std::size_t frames = trajectory.poses.size();
+  if (request.max_frames && *request.max_frames >= 0) {
+    frames = std::min(frames, static_cast<std::size_t>(*request.max_frames));
+  }
+  const RayCaster caster(request.scene);
+  const SonarSimulator simulator(caster, request.sonar, request.imaging);
+  const Eigen::Isometry3d T_vehicle_sonar = trajectory.mounting.T_vehicle_sonar();
+  VisibleSurface visible;
+  MissionWriter writer(request.output,
+                       request.scene.name + (request.empty_water ? " (empty water)" : "") + " / " +
+                           request.trajectory.kind,
+                       request.sonar, trajectory.mounting);
+  SimulationResult result;
+  for (std::size_t i = 0; i < frames; ++i) {
+    if (progress.cancelled()) {
+      result.cancelled = true;
+      break;
+    }
+    const NavSample& pose = trajectory.poses[i];
+    Eigen::Isometry3d T_world_vehicle = Eigen::Isometry3d::Identity();
+    T_world_vehicle.linear() = pose.q_world_vehicle.toRotationMatrix();
+    T_world_vehicle.translation() = pose.position_m;
+    Frame frame{pose.time_s, request.sonar.id(), {}};
+    if (request.empty_water) {
+      frame.image = cv::Mat(request.sonar.rows(), request.sonar.cols(), CV_32F, cv::Scalar(0.0f));
+    } else {
+      frame.image = simulator.render(T_world_vehicle * T_vehicle_sonar,
+                                     [&](const Eigen::Vector3f& p) { visible.add(p); });
+    }
+    addNoise(frame.image, request.noise, request.sonar, i);
+    cv::min(frame.image, 65535.0f, frame.image);
+    writer.addFrame(frame);
+    ++result.frames_written;
+    progress.report("simulate", i + 1, frames);
+  }
+  const std::size_t written = result.frames_written;
+  if (written == 0) {
+    throw Error(request.output.string(), "", "no frame simulated (cancelled before the first)");
+  }
+  // The mission's navigation covers the frames written, with the chosen error.
+  std::vector<NavSample> truth(trajectory.poses.begin(),
+                               trajectory.poses.begin() + static_cast<std::ptrdiff_t>(written));
+  if (truth.size() == 1) {  // one pose is a track of one instant: frames at that time are in it
+    truth.push_back(truth.front());
+    truth.back().time_s += 1e-3;
+  }
+  writer.finish(NavTrack(withNavigationError(truth, request.nav_error)));
+  writeFileAtomically(request.output / "ground_truth_poses.csv", navCsvText(NavTrack(truth)));
+  writeScenePly(request.scene, request.output / "ground_truth.ply");
+  if (!request.empty_water) {
+    writePointsPly(visible.points(), request.output / "visible_points.ply");
+  }
+  writeFileAtomically(request.output / "simulation.yaml", settingsYaml(request, written));
+  result.visible_points = visible.size();
+  return result;
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,48 @@
+// runSimulation: the simulator end to end. Renders every frame of a trajectory over a scene,
+// adds noise, and writes a mission folder (format v1) with the navigation a vehicle would
+// record, plus ground truth:
+//   ground_truth.ply          the scene mesh in the world frame
+//   ground_truth_poses.csv    the true vehicle poses (navigation CSV format)
+//   visible_points.ply        the surface points the sonar saw (1 cm cells)
+//   simulation.yaml           scene, trajectory, imaging, noise and navigation-error settings
+// Cancelling through Progress stops between frames and still writes a valid, shorter mission.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "common/progress.h"
+#include "sim/noise.h"
+#include "sim/scene.h"
+#include "sim/sonar_simulator.h"
+#include "sim/trajectory.h"
+#include "sonar/sonar_model.h"
+
+namespace sonarcarve {
+
+struct SimulationRequest {
+  Scene scene;
+  std::string scene_source;  ///< demo name or mesh path, recorded in simulation.yaml
+  SonarModel sonar;
+  TrajectorySpec trajectory;
+  ImagingSettings imaging;
+  NoiseSpec noise;
+  NavErrorSpec nav_error;
+  bool empty_water = false;       ///< frames of empty water (no scene returns): noise only
+  std::optional<int> max_frames;  ///< stop after this many frames
+  std::filesystem::path output;
+};
+
+struct SimulationResult {
+  std::size_t frames_written = 0;
+  std::size_t visible_points = 0;
+  bool cancelled = false;
+};
+
+/// The seed paper's sonar: 2 cm range bins to 10 m, 130 degrees in 650 beams, 20 degrees.
+SonarModel paperSonar(const std::string& id = "sim-sonar");
+
+SimulationResult runSimulation(const SimulationRequest& request, Progress& progress);
+
+}  // namespace sonarcarve

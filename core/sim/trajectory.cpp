@@ -1,0 +1,144 @@
+#include "sim/trajectory.h"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "common/angles.h"
+#include "common/error.h"
+#include "io/nav_csv.h"
+#include "sonar/attitude.h"
+
+namespace sonarcarve {
+namespace {
+
+// The sonar sits 0.5 m ahead of and 0.2 m below the vehicle's reference point.
+Mounting defaultMounting(double tilt_rad) {
+  return Mounting{{0.5, 0.0, 0.2}, {0.0, tilt_rad, 0.0}};
+}
+
+// Vehicle pose that puts the sonar at `sonar_position` with the vehicle level at `yaw`.
+NavSample vehicleFor(double time_s, const Eigen::Vector3d& sonar_position, double yaw,
+                     const Mounting& mounting) {
+  const Eigen::Quaterniond q = quaternionFromRollPitchYaw({0.0, 0.0, yaw});
+  return NavSample{time_s, sonar_position - q * mounting.translation_m, q};
+}
+
+void requireSpan(const InspectionTarget& t, const std::string& kind) {
+  if (!(t.bottom_down_m > t.top_down_m)) {
+    throw Error("trajectory", kind, "the target has no depth span to cover");
+  }
+}
+
+Trajectory vertical(const TrajectorySpec& spec, const InspectionTarget& target) {
+  requireSpan(target, "vertical");
+  Trajectory traj{{}, defaultMounting(0.0)};
+  const Eigen::Vector3d axis = target.axis_point_m;
+  // Stay half a metre off the seabed and start half a metre above the top.
+  const double top = target.top_down_m - 0.5;
+  const double bottom = target.seabed_down_m > 0.0
+                            ? std::min(target.bottom_down_m, target.seabed_down_m - 0.5)
+                            : target.bottom_down_m;
+  const int frames = static_cast<int>(std::floor((bottom - top) / spec.step_m + 1e-9)) + 1;
+  for (int i = 0; i < frames; ++i) {
+    const Eigen::Vector3d sonar(axis.x() - spec.standoff_m, axis.y(), top + i * spec.step_m);
+    traj.poses.push_back(vehicleFor(spec.start_time_s + i * spec.step_m / spec.speed_mps, sonar,
+                                    0.0, traj.mounting));
+  }
+  return traj;
+}
+
+Trajectory orbit(const TrajectorySpec& spec, const InspectionTarget& target) {
+  requireSpan(target, "orbit");
+  Trajectory traj{{}, defaultMounting(0.0)};
+  const double top = target.top_down_m;
+  const double bottom = target.seabed_down_m > 0.0
+                            ? std::min(target.bottom_down_m, target.seabed_down_m - 0.5)
+                            : target.bottom_down_m;
+  const double circumference = 2.0 * std::numbers::pi * spec.standoff_m;
+  const int frames = std::max(2, static_cast<int>(std::round(circumference / spec.step_m)));
+  for (int i = 0; i < frames; ++i) {
+    const double u = static_cast<double>(i) / (frames - 1);
+    const double angle = 2.0 * std::numbers::pi * u;  // position angle around the axis
+    const Eigen::Vector3d sonar(target.axis_point_m.x() - spec.standoff_m * std::cos(angle),
+                                target.axis_point_m.y() - spec.standoff_m * std::sin(angle),
+                                top + u * (bottom - top));
+    traj.poses.push_back(vehicleFor(spec.start_time_s + i * spec.step_m / spec.speed_mps, sonar,
+                                    angle, traj.mounting));
+  }
+  return traj;
+}
+
+Trajectory lawnmower(const TrajectorySpec& spec, const InspectionTarget& target) {
+  if (!(target.seabed_down_m > 0.0)) {
+    throw Error("trajectory", "lawnmower", "the target has no seabed to survey");
+  }
+  Trajectory traj{{}, defaultMounting(degToRad(spec.tilt_deg))};
+  const double half = 5.0;  // survey a 10 m x 10 m square around the target
+  const double depth = target.seabed_down_m - spec.altitude_m;
+  const int lines = static_cast<int>(std::floor(2.0 * half / spec.line_spacing_m)) + 1;
+  const int per_line = static_cast<int>(std::floor(2.0 * half / spec.step_m)) + 1;
+  double time = spec.start_time_s;
+  for (int l = 0; l < lines; ++l) {
+    const bool north = l % 2 == 0;
+    const double east = target.axis_point_m.y() - half + l * spec.line_spacing_m;
+    for (int i = 0; i < per_line; ++i) {
+      // The sonar looks ahead, so start each line that far behind the square.
+      const double along = -half - 3.0 + i * spec.step_m;
+      const double northing = target.axis_point_m.x() + (north ? along : -along);
+      traj.poses.push_back(
+          vehicleFor(time, {northing, east, depth}, north ? 0.0 : std::numbers::pi, traj.mounting));
+      time += spec.step_m / spec.speed_mps;
+    }
+    time += spec.line_spacing_m / spec.speed_mps;  // the turn
+  }
+  return traj;
+}
+
+}  // namespace
+
+Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& target) {
+  if (!(spec.step_m > 0.0) || !(spec.speed_mps > 0.0) || !(spec.standoff_m > 0.0)) {
+    throw Error("trajectory", spec.kind, "expected positive step, speed and standoff");
+  }
+  if (spec.kind == "vertical") {
+    return vertical(spec, target);
+  }
+  if (spec.kind == "orbit") {
+    return orbit(spec, target);
+  }
+  if (spec.kind == "lawnmower") {
+    return lawnmower(spec, target);
+  }
+  if (std::filesystem::path(spec.kind).extension() == ".csv") {
+    const NavTrack track = readNavCsv(spec.kind);
+    return Trajectory{track.samples(), defaultMounting(0.0)};
+  }
+  throw Error("trajectory", spec.kind,
+              "unknown trajectory: expected vertical, orbit, lawnmower or a .csv of poses");
+}
+
+std::vector<NavSample> withNavigationError(const std::vector<NavSample>& truth,
+                                           const NavErrorSpec& spec) {
+  std::mt19937_64 rng(spec.seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Eigen::Vector3d position_error = Eigen::Vector3d::Zero();
+  Eigen::Vector3d attitude_error = Eigen::Vector3d::Zero();  // roll, pitch, yaw (rad)
+  std::vector<NavSample> recorded;
+  recorded.reserve(truth.size());
+  for (const NavSample& t : truth) {
+    position_error +=
+        spec.position_sigma_m * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+    attitude_error +=
+        degToRad(spec.attitude_sigma_deg) * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+    NavSample r = t;
+    r.position_m += position_error;
+    r.q_world_vehicle =
+        t.q_world_vehicle *
+        quaternionFromRollPitchYaw({attitude_error.x(), attitude_error.y(), attitude_error.z()});
+    recorded.push_back(r);
+  }
+  return recorded;
+}
+
+}  // namespace sonarcarve

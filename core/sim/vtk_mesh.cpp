@@ -1,0 +1,78 @@
+#include "sim/vtk_mesh.h"
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkPointData.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkTriangleFilter.h>
+
+namespace sonarcarve {
+
+Scene sceneFromPolyData(vtkPolyData* poly, float reflectivity, const std::string& name) {
+  auto triangulate = vtkSmartPointer<vtkTriangleFilter>::New();
+  triangulate->SetInputData(poly);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
+  normals->SetInputConnection(triangulate->GetOutputPort());
+  normals->SetFeatureAngle(50.0);
+  normals->SplittingOn();
+  normals->ConsistencyOn();
+  normals->Update();
+  vtkPolyData* out = normals->GetOutput();
+
+  Scene scene;
+  scene.name = name;
+  const vtkIdType n = out->GetNumberOfPoints();
+  vtkDataArray* point_normals = out->GetPointData()->GetNormals();
+  scene.vertices.reserve(static_cast<std::size_t>(n));
+  scene.normals.reserve(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i) {
+    double p[3];
+    out->GetPoint(i, p);
+    scene.vertices.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]),
+                                static_cast<float>(p[2]));
+    double nn[3] = {0.0, 0.0, 1.0};
+    if (point_normals != nullptr) {
+      point_normals->GetTuple(i, nn);
+    }
+    scene.normals.push_back(Eigen::Vector3f(static_cast<float>(nn[0]), static_cast<float>(nn[1]),
+                                            static_cast<float>(nn[2]))
+                                .normalized());
+  }
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  vtkCellArray* polys = out->GetPolys();
+  polys->InitTraversal();
+  while (polys->GetNextCell(ids)) {
+    if (ids->GetNumberOfIds() != 3) {
+      continue;
+    }
+    scene.triangles.push_back({static_cast<std::uint32_t>(ids->GetId(0)),
+                               static_cast<std::uint32_t>(ids->GetId(1)),
+                               static_cast<std::uint32_t>(ids->GetId(2))});
+  }
+  scene.reflectivity.assign(scene.triangles.size(), reflectivity);
+  return scene;
+}
+
+vtkSmartPointer<vtkPolyData> polyDataFromScene(const Scene& scene) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(scene.vertices.size()));
+  for (std::size_t i = 0; i < scene.vertices.size(); ++i) {
+    const auto& v = scene.vertices[i];
+    points->SetPoint(static_cast<vtkIdType>(i), v.x(), v.y(), v.z());
+  }
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& t : scene.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    cells->InsertNextCell(3, ids);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(cells);
+  return poly;
+}
+
+}  // namespace sonarcarve
