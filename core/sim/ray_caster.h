@@ -1,6 +1,6 @@
 // RayCaster: nearest-hit ray casting against a Scene with Embree. Building it builds the BVH
-// (tens of ms for a demo scene); intersect() is thread safe and may be called from many
-// threads at once.
+// (tens of ms for a demo scene) over its own copy of the scene; intersect() is thread safe and may
+// be called from many threads at once.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,7 +32,7 @@ class RayCaster {
 
  private:
   struct Embree;
-  const Scene& scene_;
+  Scene scene_;  // a copy: the caster outlives whatever it was built from
   std::unique_ptr<Embree> embree_;
 };
 

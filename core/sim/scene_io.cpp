@@ -14,6 +14,7 @@
 
 #include "common/error.h"
 #include "io/atomic_file.h"
+#include "io/ply_check.h"
 #include "sim/vtk_mesh.h"
 
 namespace sonarcarve {
@@ -69,6 +70,7 @@ Scene loadSceneMesh(const std::filesystem::path& path, float reflectivity) {
     r->SetFileName(file.c_str());
     reader = r;
   } else if (ext == ".ply") {
+    checkPlyFile(path);
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(file.c_str());
     reader = r;
@@ -141,6 +143,7 @@ std::vector<Eigen::Vector3f> readPointsPly(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path)) {
     throw Error(file, "", "point cloud not found");
   }
+  checkPlyFile(path);
   auto reader = vtkSmartPointer<vtkPLYReader>::New();
   reader->SetFileName(file.c_str());
   VtkErrorCatcher errors(reader);

@@ -1,40 +1,17 @@
 // End-to-end: sonarcarve-cli as a user runs it.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <array>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "support/cli_runner.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {
 namespace {
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-RunResult runCli(const std::string& args) {
-  const std::string command = std::string("'") + SONARCARVE_CLI + "' " + args + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    return result;
-  }
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) {
-    result.output += buffer.data();
-  }
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string quoted(const std::filesystem::path& p) {
-  return "'" + p.string() + "'";
-}
+using test::quoted;
+using test::runCli;
+using test::RunResult;
 
 TEST(CliInfo, ReportsTheExampleMissionFigures) {
   const RunResult r = runCli("info --json " + quoted(test::exampleMission()));
@@ -115,8 +92,7 @@ TEST(Cli, VersionAndHelp) {
 }
 
 TEST(Cli, VerbsNotYetBuiltSaySoAndFail) {
-  for (const char* verb :
-       {"simulate", "reconstruct", "evaluate", "noise-model", "import", "bench"}) {
+  for (const char* verb : {"reconstruct", "evaluate", "noise-model", "import"}) {
     const RunResult r = runCli(verb);
     EXPECT_NE(r.exit_code, 0) << verb;
     EXPECT_NE(r.output.find("not implemented yet"), std::string::npos) << verb << r.output;

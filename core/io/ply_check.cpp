@@ -1,0 +1,132 @@
+#include "io/ply_check.h"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+
+struct PlyElement {
+  std::string name;
+  std::uint64_t count = 0;
+  std::uint64_t fixed_bytes = 0;  // bytes of the scalar properties
+  std::uint64_t list_bytes = 0;   // lower bound for list properties (a triangle each)
+};
+
+std::uint64_t typeSize(const std::string& type) {
+  static const std::map<std::string, std::uint64_t> sizes = {
+      {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
+      {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
+      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+  const auto it = sizes.find(type);
+  return it == sizes.end() ? 0 : it->second;
+}
+
+}  // namespace
+
+void checkPlyFile(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw Error(file, "", "cannot open PLY file");
+  }
+  std::string line;
+  int line_number = 0;
+  const auto fail = [&](const std::string& what) {
+    throw Error(file, "line " + std::to_string(line_number), what);
+  };
+  if (!std::getline(in, line) || (++line_number, line.rfind("ply", 0) != 0)) {
+    throw Error(file, "byte 0", "not a PLY file: expected 'ply' on the first line");
+  }
+  std::string format;
+  std::vector<PlyElement> elements;
+  bool ended = false;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') {
+      line.pop_back();
+    }
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "format") {
+      words >> format;
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian") {
+        fail("unknown PLY format '" + format + "'");
+      }
+    } else if (keyword == "element") {
+      PlyElement e;
+      if (!(words >> e.name >> e.count)) {
+        fail("expected 'element NAME COUNT'");
+      }
+      elements.push_back(e);
+    } else if (keyword == "property") {
+      if (elements.empty()) {
+        fail("property before any element");
+      }
+      std::string type;
+      words >> type;
+      if (type == "list") {
+        std::string count_type, item_type;
+        words >> count_type >> item_type;
+        if (typeSize(count_type) == 0 || typeSize(item_type) == 0) {
+          fail("unknown list property types");
+        }
+        elements.back().list_bytes += typeSize(count_type) + 3 * typeSize(item_type);
+      } else {
+        if (typeSize(type) == 0) {
+          fail("unknown property type '" + type + "'");
+        }
+        elements.back().fixed_bytes += typeSize(type);
+      }
+    } else if (keyword == "end_header") {
+      ended = true;
+      break;
+    } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+      fail("unexpected header line '" + line + "'");
+    }
+  }
+  if (!ended) {
+    throw Error(file, "line " + std::to_string(line_number),
+                "truncated PLY header: expected 'end_header'");
+  }
+  if (format.empty()) {
+    throw Error(file, "", "PLY header has no 'format' line");
+  }
+  const auto body_start = static_cast<std::uint64_t>(in.tellg());
+  const std::uint64_t size = std::filesystem::file_size(path);
+  if (format == "ascii") {
+    std::uint64_t needed = 0;
+    for (const auto& e : elements) {
+      needed += e.count;
+    }
+    std::uint64_t lines = 0;
+    while (lines < needed && std::getline(in, line)) {
+      if (line.find_first_not_of(" \t\r") != std::string::npos) {
+        ++lines;
+      }
+    }
+    if (lines < needed) {
+      throw Error(file, "byte " + std::to_string(size),
+                  "truncated PLY: expected " + std::to_string(needed) + " element lines, found " +
+                      std::to_string(lines));
+    }
+    return;
+  }
+  std::uint64_t needed = 0;
+  for (const auto& e : elements) {
+    needed += e.count * (e.fixed_bytes + e.list_bytes);
+  }
+  if (size < body_start + needed) {
+    throw Error(file, "byte " + std::to_string(size),
+                "truncated PLY: the header declares at least " + std::to_string(needed) +
+                    " bytes of data after byte " + std::to_string(body_start));
+  }
+}
+
+}  // namespace sonarcarve

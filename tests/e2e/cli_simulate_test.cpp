@@ -1,0 +1,64 @@
+// End-to-end: sonarcarve-cli simulate and frame, as a user runs them.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "io/mission.h"
+#include "support/cli_runner.h"
+#include "support/test_support.h"
+
+namespace sonarcarve {
+namespace {
+
+using test::quoted;
+using test::runCli;
+
+TEST(CliSimulate, WritesARiserMissionThatInfoReads) {
+  test::ScratchDir dir;
+  const auto out = dir.path() / "riser";
+  const auto r = runCli("simulate --scene riser --max-frames 3 --seed 4 --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("wrote 3 frames of 'riser' (vertical)"), std::string::npos) << r.output;
+  const Mission mission = readMission(out);
+  EXPECT_EQ(mission.frames.size(), 3u);
+  EXPECT_EQ(mission.sonar.cols(), 650);
+  EXPECT_EQ(mission.sonar.rows(), 500);
+  const std::string settings = test::readText(out / "simulation.yaml");
+  EXPECT_NE(settings.find("seed: 4"), std::string::npos) << settings;
+
+  // It refuses to overwrite a mission unless told to.
+  const auto again = runCli("simulate --scene riser --max-frames 1 --out " + quoted(out));
+  EXPECT_NE(again.exit_code, 0);
+  EXPECT_NE(again.output.find("already holds a mission"), std::string::npos) << again.output;
+  EXPECT_EQ(readMission(out).frames.size(), 3u);
+}
+
+TEST(CliSimulate, BadSceneOrTrajectoryFailsWithAMessage) {
+  test::ScratchDir dir;
+  const auto out = quoted(dir.path() / "m");
+  const auto scene = runCli("simulate --scene nowhere.stl --out " + out);
+  EXPECT_NE(scene.exit_code, 0);
+  EXPECT_NE(scene.output.find("nowhere.stl"), std::string::npos) << scene.output;
+  const auto traj = runCli("simulate --scene riser --trajectory zigzag --out " + out);
+  EXPECT_NE(traj.exit_code, 0);
+  EXPECT_NE(traj.output.find("unknown trajectory"), std::string::npos) << traj.output;
+}
+
+TEST(CliFrame, DrawsPolarAndFanPictures) {
+  test::ScratchDir dir;
+  const auto polar = dir.path() / "polar.png";
+  const auto fan = dir.path() / "fan.png";
+  const auto r = runCli("frame " + quoted(test::exampleMission()) + " --index 2 --polar " +
+                        quoted(polar) + " --fan " + quoted(fan));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const cv::Mat p = cv::imread(polar.string());
+  EXPECT_EQ(p.cols, 64);
+  EXPECT_EQ(p.rows, 200);
+  const cv::Mat f = cv::imread(fan.string());
+  EXPECT_EQ(f.cols, 900);
+  EXPECT_GT(f.rows, 100);
+  EXPECT_NE(runCli("frame " + quoted(test::exampleMission()) + " --index 99").exit_code, 0);
+}
+
+}  // namespace
+}  // namespace sonarcarve
