@@ -10,5 +10,7 @@ void addInfoCommand(CLI::App& app, int& exit_code);
 void addSimulateCommand(CLI::App& app, int& exit_code);
 void addBenchCommand(CLI::App& app, int& exit_code);
 void addFrameCommand(CLI::App& app, int& exit_code);
+void addReconstructCommand(CLI::App& app, int& exit_code);
+void addEvaluateCommand(CLI::App& app, int& exit_code);
 
 }  // namespace sonarcarve::cli

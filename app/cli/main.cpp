@@ -29,8 +29,8 @@ int main(int argc, char** argv) {
   sonarcarve::cli::addInfoCommand(app, exit_code);
   sonarcarve::cli::addFrameCommand(app, exit_code);
   sonarcarve::cli::addSimulateCommand(app, exit_code);
-  addPendingCommand(app, "reconstruct", "Carve a 3D map from a mission", exit_code);
-  addPendingCommand(app, "evaluate", "Compare a reconstruction with ground truth", exit_code);
+  sonarcarve::cli::addReconstructCommand(app, exit_code);
+  sonarcarve::cli::addEvaluateCommand(app, exit_code);
   addPendingCommand(app, "noise-model", "Learn a noise model from empty-water frames", exit_code);
   addPendingCommand(app, "import", "Import a vendor sonar log into a mission", exit_code);
   sonarcarve::cli::addBenchCommand(app, exit_code);

@@ -15,6 +15,7 @@
 #include "common/error.h"
 #include "io/atomic_file.h"
 #include "io/ply_check.h"
+#include "io/point_cloud_ply.h"
 #include "sim/vtk_mesh.h"
 
 namespace sonarcarve {
@@ -106,62 +107,16 @@ void writeScenePly(const Scene& scene, const std::filesystem::path& path) {
 
 void writePointsPly(const std::vector<Eigen::Vector3f>& points, const std::filesystem::path& path,
                     const std::vector<float>& scalars, const char* scalar_name) {
-  auto vtk_points = vtkSmartPointer<vtkPoints>::New();
-  vtk_points->SetDataTypeToFloat();
-  vtk_points->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    vtk_points->SetPoint(static_cast<vtkIdType>(i), points[i].x(), points[i].y(), points[i].z());
-  }
-  // vtkPLYWriter writes the points as vertices and only polygons as faces: no cells needed.
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(vtk_points);
+  PointCloud cloud;
+  cloud.positions = points;
   if (!scalars.empty()) {
-    auto array = vtkSmartPointer<vtkFloatArray>::New();
-    array->SetName(scalar_name);
-    array->SetNumberOfValues(static_cast<vtkIdType>(scalars.size()));
-    for (std::size_t i = 0; i < scalars.size(); ++i) {
-      array->SetValue(static_cast<vtkIdType>(i), scalars[i]);
-    }
-    poly->GetPointData()->AddArray(array);
+    cloud.properties[scalar_name] = scalars;
   }
-  replaceFileAtomically(path, [&](const std::filesystem::path& tmp) {
-    auto writer = vtkSmartPointer<vtkPLYWriter>::New();
-    writer->SetFileName(tmp.string().c_str());
-    writer->SetInputData(poly);
-    writer->SetFileTypeToBinary();
-    if (!scalars.empty()) {
-      writer->SetArrayName(scalar_name);
-    }
-    if (writer->Write() != 1) {
-      throw Error(path.string(), "", "PLY writer failed");
-    }
-  });
+  writePointCloudPly(path, cloud);
 }
 
 std::vector<Eigen::Vector3f> readPointsPly(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  if (!std::filesystem::is_regular_file(path)) {
-    throw Error(file, "", "point cloud not found");
-  }
-  checkPlyFile(path);
-  auto reader = vtkSmartPointer<vtkPLYReader>::New();
-  reader->SetFileName(file.c_str());
-  VtkErrorCatcher errors(reader);
-  reader->Update();
-  vtkPolyData* poly = reader->GetOutput();
-  if (!errors.message().empty() || poly == nullptr || poly->GetNumberOfPoints() == 0) {
-    throw Error(
-        file, "",
-        "cannot read points from PLY" +
-            (errors.message().empty() ? std::string(" (no vertices)") : ": " + errors.message()));
-  }
-  std::vector<Eigen::Vector3f> points(static_cast<std::size_t>(poly->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
-    double p[3];
-    poly->GetPoint(i, p);
-    points[static_cast<std::size_t>(i)] = Eigen::Vector3d(p[0], p[1], p[2]).cast<float>();
-  }
-  return points;
+  return readPointCloudPly(path).positions;
 }
 
 }  // namespace sonarcarve

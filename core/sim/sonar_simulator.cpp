@@ -116,7 +116,8 @@ cv::Mat SonarSimulator::render(const Eigen::Isometry3d& T_world_sonar, const Hit
           sample.energy = per_sample * caster_.scene().reflectivity[hit.triangle] * cos_incidence *
                           beam_weight_[static_cast<std::size_t>(k)] *
                           static_cast<float>(range_factor);
-          if (hits && sonar_.range().binOf(hit.distance)) {
+          if (hits && cos_incidence >= settings_.visible_min_cos_incidence &&
+              sonar_.range().binOf(hit.distance)) {
             seen.push_back(sample.point);
           }
         }

@@ -29,9 +29,14 @@ struct ImagingSettings {
   double gain = 1000.0;             ///< counts for a full aperture of unit, normal returns
   double spreading_exponent = 0.0;  ///< intensity times r^-k (spreading loss); 0 = off
   double tvg_exponent = 0.0;        ///< intensity times r^k (range-dependent gain); 0 = off
+  /// Hits reported as seen (HitSink) need at least this cos(incidence): a surface met at more
+  /// than 78 degrees returns under a fifth of a facing one and cannot be placed in elevation
+  /// (its returns span a fraction of an elevation step), so no reconstruction recovers it.
+  double visible_min_cos_incidence = 0.2;
 };
 
-/// Called with each surface point a ray hit inside the sonar's window (world frame).
+/// Called with each surface point a ray hit inside the sonar's window (world frame), when the
+/// hit is not grazing (ImagingSettings::visible_min_cos_incidence).
 using HitSink = std::function<void(const Eigen::Vector3f& p_world)>;
 
 class SonarSimulator {

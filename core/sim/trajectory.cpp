@@ -34,11 +34,12 @@ Trajectory vertical(const TrajectorySpec& spec, const InspectionTarget& target) 
   requireSpan(target, "vertical");
   Trajectory traj{{}, defaultMounting(0.0)};
   const Eigen::Vector3d axis = target.axis_point_m;
-  // Stay half a metre off the seabed and start half a metre above the top.
-  const double top = target.top_down_m - 0.5;
-  const double bottom = target.seabed_down_m > 0.0
-                            ? std::min(target.bottom_down_m, target.seabed_down_m - 0.5)
-                            : target.bottom_down_m;
+  // Start above the top by the clearance, so that views from above carve the water over it.
+  const double top = target.top_down_m - spec.top_clearance_m;
+  const double bottom =
+      target.seabed_down_m > 0.0
+          ? std::min(target.bottom_down_m, target.seabed_down_m - spec.seabed_clearance_m)
+          : target.bottom_down_m;
   const int frames = static_cast<int>(std::floor((bottom - top) / spec.step_m + 1e-9)) + 1;
   for (int i = 0; i < frames; ++i) {
     const Eigen::Vector3d sonar(axis.x() - spec.standoff_m, axis.y(), top + i * spec.step_m);
@@ -52,9 +53,10 @@ Trajectory orbit(const TrajectorySpec& spec, const InspectionTarget& target) {
   requireSpan(target, "orbit");
   Trajectory traj{{}, defaultMounting(0.0)};
   const double top = target.top_down_m;
-  const double bottom = target.seabed_down_m > 0.0
-                            ? std::min(target.bottom_down_m, target.seabed_down_m - 0.5)
-                            : target.bottom_down_m;
+  const double bottom =
+      target.seabed_down_m > 0.0
+          ? std::min(target.bottom_down_m, target.seabed_down_m - spec.seabed_clearance_m)
+          : target.bottom_down_m;
   const double circumference = 2.0 * std::numbers::pi * spec.standoff_m;
   const int frames = std::max(2, static_cast<int>(std::round(circumference / spec.step_m)));
   for (int i = 0; i < frames; ++i) {

@@ -1,7 +1,8 @@
 // Trajectories for the simulator: the vehicle's true poses (one per frame) and the sonar's
 // mounting, plus navigation error for the poses a mission records.
 //   vertical   the seed paper's inspection: sonar level, facing the structure's axis from
-//              `standoff_m`, moved down in `step_m` steps over the target's depth span
+//              `standoff_m`, moved down in `step_m` steps over the target's depth span,
+//              down to `seabed_clearance_m` above the seabed
 //   orbit      a descending circle of radius `standoff_m` around the axis, sonar facing in,
 //              one turn over the depth span, `step_m` apart along the circle
 //   lawnmower  parallel north-south lines `line_spacing_m` apart at `altitude_m` above the
@@ -28,6 +29,14 @@ struct TrajectorySpec {
   double altitude_m = 3.0;        ///< lawnmower: height above the seabed
   double line_spacing_m = 2.0;    ///< lawnmower: distance between lines
   double tilt_deg = -30.0;        ///< lawnmower: sonar pitch on the vehicle (negative = down)
+  /// vertical and orbit: lowest sonar depth above the seabed. 1.8 m keeps the seabed out of
+  /// a 10 m, 20 degree fan: seen at grazing incidence from a vertical track, a flat seabed
+  /// cannot be localised in elevation (it leaves a slab of ~0.3 m uncarved).
+  double seabed_clearance_m = 1.8;
+  /// vertical: the first sonar depth above the structure's top. The elevation of a return
+  /// is only resolved where views from above and below both see it: 1 m covers the upper
+  /// half of a 20 degree fan at 4.5 m (0.8 m).
+  double top_clearance_m = 1.0;
   double start_time_s = 0.0;
 };
 

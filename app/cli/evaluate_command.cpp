@@ -1,0 +1,53 @@
+// `sonarcarve-cli evaluate --reference MESH --reconstruction POINTS.ply`: accuracy figures.
+#include <iostream>
+
+#include "cli/commands.h"
+#include "eval/evaluator.h"
+#include "occlusion/surface_points.h"
+#include "sim/scene_io.h"
+
+namespace sonarcarve::cli {
+
+void addEvaluateCommand(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("evaluate", "Compare a reconstruction with a ground-truth mesh");
+  struct Options {
+    std::string reference, reconstruction, visible, errors;
+    double tau = 0.05;
+    bool json = false;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("--reference", o->reference, "Ground-truth mesh (PLY, STL, OBJ)")->required();
+  cmd->add_option("--reconstruction", o->reconstruction, "Reconstructed points (PLY)")->required();
+  cmd->add_option("--visible", o->visible,
+                  "Surface points the sonar saw (PLY); completeness is measured on them");
+  cmd->add_option("--tau", o->tau, "Distance threshold of precision and completeness, m")
+      ->capture_default_str();
+  cmd->add_option("--errors", o->errors, "Write the points with their error (PLY, 'error_m')");
+  cmd->add_flag("--json", o->json, "Print JSON");
+  cmd->callback([o, &exit_code] {
+    std::vector<Eigen::Vector3f> points;
+    for (const auto& p : readSurfacePointsPly(o->reconstruction)) {
+      points.push_back(p.position_m);
+    }
+    const EvaluationResult r = evaluate(
+        points, loadSceneMesh(o->reference),
+        o->visible.empty() ? std::vector<Eigen::Vector3f>{} : readPointsPly(o->visible), o->tau);
+    if (!o->errors.empty()) {
+      writePointsPly(points, o->errors, r.point_errors_m, "error_m");
+    }
+    if (o->json) {
+      std::cout << r.toJson() << "\n";
+    } else {
+      std::printf("points %zu, reference points %zu\n", r.reconstructed_points, r.reference_points);
+      std::printf("accuracy  mean %.4f m  median %.4f m  p90 %.4f m\n", r.accuracy_mean_m,
+                  r.accuracy_median_m, r.accuracy_p90_m);
+      std::printf("at tau %.3f m: precision %.3f  completeness %.3f  F-score %.3f\n", r.tau_m,
+                  r.precision, r.completeness, r.fscore);
+      std::printf("chamfer %.4f m, points farther than 10 cm: %zu\n", r.chamfer_m,
+                  r.floating_points);
+    }
+    exit_code = 0;
+  });
+}
+
+}  // namespace sonarcarve::cli

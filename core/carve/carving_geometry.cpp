@@ -1,0 +1,81 @@
+#include "carve/carving_geometry.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+
+CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& params)
+    : sonar_(sonar) {
+  range_min_ = std::max(params.range_min_m, sonar.range().min_m);
+  range_max_ = params.range_max_m > 0.0 ? std::min(params.range_max_m, sonar.range().maxRange())
+                                        : sonar.range().maxRange();
+  if (!(range_max_ > range_min_)) {
+    throw Error("carving", "range window", "expected range_max_m > range_min_m");
+  }
+  range_min_sq_ = static_cast<float>(range_min_ * range_min_);
+  range_max_sq_ = static_cast<float>(range_max_ * range_max_);
+  const double s = std::sin(0.5 * sonar.verticalAperture());
+  sin_half_aperture_sq_ = static_cast<float>(s * s);
+
+  const BearingTable& b = sonar.bearings();
+  double narrowest = b.fieldOfView();
+  for (int j = 0; j < b.count(); ++j) {
+    narrowest = std::min(narrowest, b.edges()[static_cast<std::size_t>(j) + 1] -
+                                        b.edges()[static_cast<std::size_t>(j)]);
+  }
+  // Uniform tables: one cell per beam is exact. Explicit ones: 16 cells per narrowest beam.
+  const double step = b.isUniform() ? b.fieldOfView() / b.count() : narrowest / 16.0;
+  const auto cells = static_cast<std::size_t>(std::ceil(b.fieldOfView() / step));
+  lut_.resize(cells);
+  for (std::size_t i = 0; i < cells; ++i) {
+    const auto beam = b.beamOf(b.leftEdge() + (static_cast<double>(i) + 0.5) * step);
+    lut_[i] = static_cast<std::int16_t>(beam ? *beam : -1);
+  }
+  lut_left_ = static_cast<float>(b.leftEdge());
+  lut_inv_step_ = static_cast<float>(1.0 / step);
+}
+
+Eigen::AlignedBox3d CarvingGeometry::frustumBounds(const Eigen::Isometry3d& T_world_sonar) const {
+  Eigen::AlignedBox3d box;
+  const double half = 0.5 * sonar_.verticalAperture();
+  const double left = sonar_.bearings().leftEdge();
+  const double right = sonar_.bearings().rightEdge();
+  const int steps =
+      std::max(2, static_cast<int>(std::ceil((right - left) / (std::numbers::pi / 36))));
+  for (double r : {range_min_, range_max_}) {
+    for (int i = 0; i <= steps; ++i) {
+      const double bearing = left + (right - left) * i / steps;
+      for (double elevation : {-half, 0.0, half}) {
+        box.extend(T_world_sonar * pointFromPolar({r, bearing, elevation}));
+      }
+    }
+  }
+  // Arcs between the samples bulge by at most r (1 - cos(2.5 deg)) < 1 % of the range.
+  const double pad = 0.01 * range_max_;
+  box.min().array() -= pad;
+  box.max().array() += pad;
+  return box;
+}
+
+bool CarvingGeometry::sphereMayTouchFrustum(const Eigen::Vector3d& c, double radius) const {
+  const double d = c.norm();
+  if (d - radius > range_max_ || d + radius < range_min_) {
+    return false;
+  }
+  if (d <= radius) {
+    return true;
+  }
+  const double margin = std::asin(radius / d);
+  const double bearing = std::atan2(c.y(), c.x());
+  if (bearing + margin < sonar_.bearings().leftEdge() ||
+      bearing - margin > sonar_.bearings().rightEdge()) {
+    return false;
+  }
+  const double elevation = std::asin(std::clamp(-c.z() / d, -1.0, 1.0));
+  return std::abs(elevation) - margin <= 0.5 * sonar_.verticalAperture();
+}
+
+}  // namespace sonarcarve

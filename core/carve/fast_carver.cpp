@@ -1,0 +1,182 @@
+#include "carve/fast_carver.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+
+constexpr int kSide = VoxelMap::kBlockSide;
+
+// What the voxel kernel reads of one frame: the thresholded image and the pose.
+struct FrameView {
+  const float* pixels;  // rows x cols, thresholded
+  int cols;
+  int rows;
+  Eigen::Matrix3f R_sonar_world;
+  Eigen::Vector3f t_sonar_world;
+  // Occlusion-aware carving (null: every voxel in the frustum is observed).
+  const float* first_return = nullptr;
+  int elevation_bins = 1;
+  float half_aperture = 0.0f;
+  float inv_elevation_step = 0.0f;
+  float margin = 0.0f;
+};
+
+// asin for the small angles of a vertical aperture: 1e-6 rad up to 15 degrees.
+inline float smallAsin(float s) {
+  const float s2 = s * s;
+  return s * (1.0f + s2 * (1.0f / 6.0f + s2 * (3.0f / 40.0f + s2 * (5.0f / 112.0f))));
+}
+
+// Carves the 512 voxels of one block in `values`; returns (voxels observed, changed).
+std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
+                                const Eigen::Vector3f& first_centre_world, float voxel,
+                                float* values) {
+  const Eigen::Vector3f p0 = f.R_sonar_world * first_centre_world + f.t_sonar_world;
+  const Eigen::Vector3f dx = f.R_sonar_world.col(0) * voxel;
+  const Eigen::Vector3f dy = f.R_sonar_world.col(1) * voxel;
+  const Eigen::Vector3f dz = f.R_sonar_world.col(2) * voxel;
+  const float rmin2 = g.rangeMinSq();
+  const float rmax2 = g.rangeMaxSq();
+  const float sin2 = g.sinHalfApertureSq();
+  const float bin_min = g.binMin();
+  const float inv_res = g.binInvResolution();
+  int observed = 0;
+  bool changed = false;
+  for (int z = 0; z < kSide; ++z) {
+    for (int y = 0; y < kSide; ++y) {
+      Eigen::Vector3f p = p0 + static_cast<float>(y) * dy + static_cast<float>(z) * dz;
+      float* v = values + (z * kSide + y) * kSide;
+      for (int x = 0; x < kSide; ++x, p += dx) {
+        const float r2 = p.squaredNorm();
+        if (r2 < rmin2 || r2 >= rmax2 || p.z() * p.z() > r2 * sin2) {
+          continue;
+        }
+        const int beam = g.beamOf(fastAtan2(p.y(), p.x()));
+        if (beam < 0) {
+          continue;
+        }
+        const float r = std::sqrt(r2);
+        const int row = static_cast<int>((r - bin_min) * inv_res);
+        if (row < 0 || row >= f.rows) {
+          continue;
+        }
+        if (f.first_return != nullptr) {
+          const int bin = std::clamp(
+              static_cast<int>((smallAsin(-p.z() / r) + f.half_aperture) * f.inv_elevation_step), 0,
+              f.elevation_bins - 1);
+          if (r > f.first_return[beam * f.elevation_bins + bin] + f.margin) {
+            continue;  // hidden behind the first surface: not observed by this frame
+          }
+        }
+        ++observed;
+        const float intensity = f.pixels[row * f.cols + beam];
+        if (intensity < v[x]) {
+          v[x] = intensity;
+          changed = true;
+        }
+      }
+    }
+  }
+  return {observed, changed};
+}
+
+bool allCarved(const float* values) {
+  return std::all_of(values, values + VoxelMap::kBlockVoxels, [](float v) { return v == 0.0f; });
+}
+
+}  // namespace
+
+FastCarver::FastCarver(VoxelMap& map, const SonarModel& sonar, const CarveParams& params,
+                       ThreadPool& pool)
+    : map_(map), params_(params), geometry_(sonar, params), pool_(pool) {}
+
+IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar,
+                                     std::uint32_t stamp, const VisibilityLimit& visibility) {
+  const SonarModel& sonar = geometry_.sonar();
+  if (image.type() != CV_32F || image.rows != sonar.rows() || image.cols != sonar.cols()) {
+    throw Error("carving", "frame", "image does not match the sonar model");
+  }
+  cv::Mat pixels;
+  cv::threshold(image, pixels, params_.intensity_threshold, 0.0, cv::THRESH_TOZERO);
+  if (!pixels.isContinuous()) {
+    pixels = pixels.clone();
+  }
+  const Eigen::Isometry3d T_sonar_world = T_world_sonar.inverse();
+  FrameView frame{pixels.ptr<float>(0), pixels.cols, pixels.rows,
+                  T_sonar_world.linear().cast<float>(), T_sonar_world.translation().cast<float>()};
+  if (visibility.first_return_m != nullptr) {
+    frame.first_return = visibility.first_return_m->data();
+    frame.elevation_bins = visibility.elevation_bins;
+    frame.half_aperture = static_cast<float>(0.5 * sonar.verticalAperture());
+    frame.inv_elevation_step = static_cast<float>(1.0 / visibility.elevation_step_rad);
+    frame.margin = static_cast<float>(visibility.margin_m);
+  }
+
+  // Blocks of the map inside the frustum's bounding box.
+  Eigen::AlignedBox3d box = geometry_.frustumBounds(T_world_sonar).intersection(map_.bounds());
+  if (box.isEmpty()) {
+    return {};
+  }
+  const double block = map_.blockSize();
+  const Eigen::Vector3i lo =
+      ((box.min() / block).array().floor().cast<int>().matrix() - map_.firstBlock())
+          .cwiseMax(Eigen::Vector3i::Zero());
+  const Eigen::Vector3i hi =
+      ((box.max() / block).array().floor().cast<int>().matrix() - map_.firstBlock())
+          .cwiseMin(map_.blockDims() - Eigen::Vector3i::Ones());
+  const Eigen::Vector3i span = hi - lo + Eigen::Vector3i::Ones();
+  const auto lines = static_cast<std::size_t>(span.y()) * static_cast<std::size_t>(span.z());
+  const double voxel = map_.voxelSize();
+  const double radius = 0.5 * std::sqrt(3.0) * block;
+
+  std::atomic<std::size_t> visited{0}, changed_blocks{0}, observed{0};
+  pool_.parallelFor(lines, 4, [&](std::size_t begin, std::size_t end) {
+    alignas(64) float scratch[VoxelMap::kBlockVoxels];
+    std::size_t my_visited = 0, my_changed = 0, my_observed = 0;
+    for (std::size_t line = begin; line < end; ++line) {
+      const int by = lo.y() + static_cast<int>(line % static_cast<std::size_t>(span.y()));
+      const int bz = lo.z() + static_cast<int>(line / static_cast<std::size_t>(span.y()));
+      for (int bx = lo.x(); bx <= hi.x(); ++bx) {
+        const Eigen::Vector3i rel(bx, by, bz);
+        const std::size_t b = map_.blockIndex(rel);
+        const VoxelMap::BlockState state = map_.state(b);
+        if (state == VoxelMap::BlockState::Free) {
+          continue;
+        }
+        const Eigen::Vector3d origin = (rel + map_.firstBlock()).cast<double>() * block;
+        const Eigen::Vector3d centre = origin + Eigen::Vector3d::Constant(0.5 * block);
+        if (!geometry_.sphereMayTouchFrustum(T_sonar_world * centre, radius)) {
+          continue;
+        }
+        ++my_visited;
+        float* values = map_.values(b);
+        if (values == nullptr) {
+          std::fill(std::begin(scratch), std::end(scratch), VoxelMap::kUnknown);
+          values = scratch;
+        }
+        const Eigen::Vector3f first =
+            (origin + Eigen::Vector3d::Constant(0.5 * voxel)).cast<float>();
+        const auto [seen, changed] =
+            carveBlock(geometry_, frame, first, static_cast<float>(voxel), values);
+        my_observed += static_cast<std::size_t>(seen);
+        if (!changed) {
+          continue;
+        }
+        ++my_changed;
+        map_.storeBlock(b, allCarved(values) ? nullptr : values, stamp);
+      }
+    }
+    visited += my_visited;
+    changed_blocks += my_changed;
+    observed += my_observed;
+  });
+  return {visited.load(), changed_blocks.load(), observed.load()};
+}
+
+}  // namespace sonarcarve

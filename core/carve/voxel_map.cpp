@@ -1,0 +1,149 @@
+#include "carve/voxel_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+int floorDiv(int a, int b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+}  // namespace
+
+VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds)
+    : voxel_size_m_(voxel_size_m) {
+  if (!(voxel_size_m > 0.0) || bounds.isEmpty()) {
+    throw Error("voxel map", "", "expected a positive voxel size and a non-empty region");
+  }
+  const Eigen::Vector3i lo = voxelOf(bounds.min());
+  const Eigen::Vector3i hi = voxelOf(bounds.max());
+  for (int a = 0; a < 3; ++a) {
+    first_block_[a] = floorDiv(lo[a], kBlockSide);
+    dims_[a] = floorDiv(hi[a], kBlockSide) - first_block_[a] + 1;
+  }
+  const double blocks = static_cast<double>(dims_.x()) * dims_.y() * dims_.z();
+  if (blocks > 2.0e9) {
+    throw Error("voxel map", "",
+                "region too large for the voxel size (" + std::to_string(blocks) +
+                    " blocks); set a smaller region");
+  }
+  const auto n = static_cast<std::size_t>(blocks);
+  state_.assign(n, BlockState::Unknown);
+  slot_.assign(n, -1);
+  stamp_.assign(n, 0);
+  chunks_.reserve(n / kChunkBlocks + 1);
+}
+
+Eigen::AlignedBox3d VoxelMap::bounds() const {
+  const Eigen::Vector3d lo = first_block_.cast<double>() * blockSize();
+  return {lo, lo + dims_.cast<double>() * blockSize()};
+}
+
+Eigen::Vector3i VoxelMap::blockCoords(std::size_t index) const {
+  const auto nx = static_cast<std::size_t>(dims_.x());
+  const auto ny = static_cast<std::size_t>(dims_.y());
+  return Eigen::Vector3i(static_cast<int>(index % nx), static_cast<int>((index / nx) % ny),
+                         static_cast<int>(index / (nx * ny)));
+}
+
+const float* VoxelMap::values(std::size_t block) const {
+  return state_[block] == BlockState::Mixed ? slotValues(slot_[block]) : nullptr;
+}
+
+float* VoxelMap::values(std::size_t block) {
+  return state_[block] == BlockState::Mixed ? slotValues(slot_[block]) : nullptr;
+}
+
+Eigen::Vector3i VoxelMap::voxelOf(const Eigen::Vector3d& p_world) const {
+  return (p_world / voxel_size_m_).array().floor().cast<int>();
+}
+
+float VoxelMap::value(const Eigen::Vector3i& voxel) const {
+  Eigen::Vector3i rel;
+  Eigen::Vector3i in;
+  for (int a = 0; a < 3; ++a) {
+    const int b = floorDiv(voxel[a], kBlockSide);
+    rel[a] = b - first_block_[a];
+    in[a] = voxel[a] - b * kBlockSide;
+    if (rel[a] < 0 || rel[a] >= dims_[a]) {
+      return kUnknown;
+    }
+  }
+  const std::size_t block = blockIndex(rel);
+  switch (state_[block]) {
+    case BlockState::Unknown:
+      return kUnknown;
+    case BlockState::Free:
+      return 0.0f;
+    case BlockState::Mixed:
+      break;
+  }
+  return values(block)[(in.z() * kBlockSide + in.y()) * kBlockSide + in.x()];
+}
+
+void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint32_t stamp) {
+  stamp_[block] = stamp;
+  if (new_values == nullptr) {
+    if (state_[block] == BlockState::Mixed) {
+      std::lock_guard lock(storage_mutex_);
+      free_slots_.push_back(slot_[block]);
+      slot_[block] = -1;
+    }
+    state_[block] = BlockState::Free;
+    return;
+  }
+  if (state_[block] != BlockState::Mixed) {
+    std::lock_guard lock(storage_mutex_);
+    if (free_slots_.empty()) {
+      if (slots_used_ % kChunkBlocks == 0) {
+        chunks_.push_back(std::make_unique<float[]>(kChunkBlocks * kBlockVoxels));
+      }
+      slot_[block] = static_cast<std::int32_t>(slots_used_++);
+    } else {
+      slot_[block] = free_slots_.back();
+      free_slots_.pop_back();
+    }
+    state_[block] = BlockState::Mixed;
+  }
+  float* target = slotValues(slot_[block]);
+  if (target != new_values) {
+    std::copy(new_values, new_values + kBlockVoxels, target);
+  }
+}
+
+void VoxelMap::forEachOccupied(const std::function<void(const Eigen::Vector3i&, float)>& f) const {
+  for (std::size_t b = 0; b < state_.size(); ++b) {
+    const float* v = values(b);
+    if (v == nullptr) {
+      continue;
+    }
+    const Eigen::Vector3i base = (blockCoords(b) + first_block_) * kBlockSide;
+    for (int i = 0; i < kBlockVoxels; ++i) {
+      if (v[i] > 0.0f && v[i] < kUnknown) {
+        f(base + Eigen::Vector3i(i % kBlockSide, (i / kBlockSide) % kBlockSide,
+                                 i / (kBlockSide * kBlockSide)),
+          v[i]);
+      }
+    }
+  }
+}
+
+std::size_t VoxelMap::occupiedCount() const {
+  std::size_t n = 0;
+  forEachOccupied([&](const Eigen::Vector3i&, float) { ++n; });
+  return n;
+}
+
+std::size_t VoxelMap::blockCount(BlockState s) const {
+  return static_cast<std::size_t>(std::count(state_.begin(), state_.end(), s));
+}
+
+std::size_t VoxelMap::memoryBytes() const {
+  return state_.capacity() * sizeof(BlockState) + slot_.capacity() * sizeof(std::int32_t) +
+         stamp_.capacity() * sizeof(std::uint32_t) +
+         chunks_.size() * kChunkBlocks * kBlockVoxels * sizeof(float);
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,97 @@
+// VoxelMap: the carved map of the fast engine. Each voxel keeps the MINIMUM intensity seen
+// over all views that observed it; +inf means never observed (unknown). A voxel is carved
+// (empty) at 0 and occupied above 0.
+//
+// Storage is block-sparse: blocks of 8 x 8 x 8 voxels over a bounded box of the world. A block
+// is Unknown (nothing stored), Free (every voxel carved: nothing stored, and it stays so, since
+// a minimum never rises) or Mixed (512 floats). Free and unknown space therefore cost a few
+// bytes per block, and carving skips free blocks entirely.
+//
+// Voxel (i, j, k) covers [i, i+1) * voxel_size along north, east, down, as OctoMap's keys do
+// (key = index + 32768), so both engines and exported .bt files share one grid.
+// Limits: the box must hold at most 2^31 blocks; indices fit OctoMap's +-32768 voxels.
+// Not thread safe for writing; FastCarver coordinates its threads.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace sonarcarve {
+
+class VoxelMap {
+ public:
+  static constexpr int kBlockSide = 8;
+  static constexpr int kBlockVoxels = kBlockSide * kBlockSide * kBlockSide;
+  static constexpr float kUnknown = std::numeric_limits<float>::infinity();
+  enum class BlockState : std::uint8_t { Unknown, Free, Mixed };
+
+  /// Covers `bounds` (world NED, metres), rounded outwards to whole blocks. Throws Error if
+  /// the voxel size is not positive or the box is empty or too large.
+  VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds);
+
+  double voxelSize() const { return voxel_size_m_; }
+  double blockSize() const { return voxel_size_m_ * kBlockSide; }
+  const Eigen::Vector3i& blockDims() const { return dims_; }
+  /// Global index of the first block of the box (block = floor(voxel / 8)).
+  const Eigen::Vector3i& firstBlock() const { return first_block_; }
+  Eigen::AlignedBox3d bounds() const;
+  std::size_t blockCount() const { return state_.size(); }
+
+  /// Linear index of a block given in box-relative block coordinates.
+  std::size_t blockIndex(const Eigen::Vector3i& rel) const {
+    return (static_cast<std::size_t>(rel.z()) * dims_.y() + rel.y()) * dims_.x() + rel.x();
+  }
+  Eigen::Vector3i blockCoords(std::size_t index) const;
+  BlockState state(std::size_t block) const { return state_[block]; }
+  /// The 512 values of a Mixed block (x fastest, then y, then z); nullptr otherwise.
+  const float* values(std::size_t block) const;
+  float* values(std::size_t block);
+  /// Frame stamp of the last change of a block (0: never changed).
+  std::uint32_t stamp(std::size_t block) const { return stamp_[block]; }
+
+  /// World position of the centre of global voxel `voxel`.
+  Eigen::Vector3d voxelCentre(const Eigen::Vector3i& voxel) const {
+    return (voxel.cast<double>() + Eigen::Vector3d::Constant(0.5)) * voxel_size_m_;
+  }
+  /// Global voxel index containing `p_world`.
+  Eigen::Vector3i voxelOf(const Eigen::Vector3d& p_world) const;
+  /// Value of a global voxel (kUnknown outside the box).
+  float value(const Eigen::Vector3i& voxel) const;
+
+  /// Replaces a block's state after carving: `values` (512) are the block's new contents, or
+  /// nullptr for Free. Thread safe against other calls for *different* blocks.
+  void storeBlock(std::size_t block, const float* values, std::uint32_t stamp);
+
+  /// Calls f(global voxel index, value) for every occupied voxel (0 < value < inf).
+  void forEachOccupied(const std::function<void(const Eigen::Vector3i&, float)>& f) const;
+  std::size_t occupiedCount() const;
+  std::size_t blockCount(BlockState state) const;
+  /// Bytes held by the map (block table and block contents).
+  std::size_t memoryBytes() const;
+
+ private:
+  double voxel_size_m_;
+  Eigen::Vector3i first_block_;
+  Eigen::Vector3i dims_;
+  std::vector<BlockState> state_;
+  std::vector<std::int32_t> slot_;  // Mixed blocks: index into storage_ / kBlockVoxels
+  std::vector<std::uint32_t> stamp_;
+  // Block contents live in chunks of kChunkBlocks blocks whose addresses never change, so
+  // threads may carve Mixed blocks in place while others allocate new ones.
+  static constexpr std::size_t kChunkBlocks = 1024;
+  float* slotValues(std::int32_t slot) const {
+    const auto s = static_cast<std::size_t>(slot);
+    return chunks_[s / kChunkBlocks].get() + (s % kChunkBlocks) * kBlockVoxels;
+  }
+  std::vector<std::unique_ptr<float[]>> chunks_;  // capacity reserved up front
+  std::size_t slots_used_ = 0;
+  std::vector<std::int32_t> free_slots_;
+  std::mutex storage_mutex_;
+};
+
+}  // namespace sonarcarve

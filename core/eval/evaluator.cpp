@@ -1,0 +1,156 @@
+#include "eval/evaluator.h"
+
+#include <vtkGenericCell.h>
+#include <vtkPointSet.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkStaticPointLocator.h>
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "common/thread_pool.h"
+#include "sim/vtk_mesh.h"
+
+namespace sonarcarve {
+namespace {
+
+double quantile(std::vector<float> values, double q) {
+  if (values.empty()) {
+    return 0.0;
+  }
+  auto it =
+      values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), it, values.end());
+  return *it;
+}
+
+std::vector<float> distancesToMesh(const std::vector<Eigen::Vector3f>& points, const Scene& mesh) {
+  auto poly = polyDataFromScene(mesh);
+  auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+  locator->SetDataSet(poly);
+  locator->BuildLocator();
+  std::vector<float> d(points.size());
+  ThreadPool::shared().parallelFor(points.size(), 1024, [&](std::size_t b, std::size_t e) {
+    auto cell = vtkSmartPointer<vtkGenericCell>::New();
+    for (std::size_t i = b; i < e; ++i) {
+      double x[3] = {points[i].x(), points[i].y(), points[i].z()};
+      double closest[3];
+      vtkIdType cell_id = -1;
+      int sub_id = 0;
+      double dist2 = 0.0;
+      locator->FindClosestPoint(x, closest, cell, cell_id, sub_id, dist2);
+      d[i] = static_cast<float>(std::sqrt(dist2));
+    }
+  });
+  return d;
+}
+
+std::vector<float> distancesToPoints(const std::vector<Eigen::Vector3f>& queries,
+                                     const std::vector<Eigen::Vector3f>& cloud) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(cloud.size()));
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    points->SetPoint(static_cast<vtkIdType>(i), cloud[i].x(), cloud[i].y(), cloud[i].z());
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  auto locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+  locator->SetDataSet(poly);
+  locator->BuildLocator();
+  std::vector<float> d(queries.size());
+  ThreadPool::shared().parallelFor(queries.size(), 1024, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      double x[3] = {queries[i].x(), queries[i].y(), queries[i].z()};
+      const vtkIdType id = locator->FindClosestPoint(x);
+      d[i] = (cloud[static_cast<std::size_t>(id)] - queries[i]).norm();
+    }
+  });
+  return d;
+}
+
+double mean(const std::vector<float>& v) {
+  double s = 0.0;
+  for (float x : v) {
+    s += x;
+  }
+  return v.empty() ? 0.0 : s / static_cast<double>(v.size());
+}
+
+double fractionWithin(const std::vector<float>& v, double tau) {
+  if (v.empty()) {
+    return 0.0;
+  }
+  const auto n = std::count_if(v.begin(), v.end(), [&](float d) { return d <= tau; });
+  return static_cast<double>(n) / static_cast<double>(v.size());
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3f> sampleSurface(const Scene& mesh, double spacing_m) {
+  std::vector<Eigen::Vector3f> points;
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3f a = mesh.vertices[t[0]];
+    const Eigen::Vector3f ab = mesh.vertices[t[1]] - a;
+    const Eigen::Vector3f ac = mesh.vertices[t[2]] - a;
+    const double longest = std::max({ab.norm(), ac.norm(), (ab - ac).norm()});
+    const int n = std::max(1, static_cast<int>(std::ceil(longest / spacing_m)));
+    for (int i = 0; i <= n; ++i) {
+      for (int j = 0; i + j <= n; ++j) {
+        points.push_back(a + (static_cast<float>(i) / n) * ab + (static_cast<float>(j) / n) * ac);
+      }
+    }
+  }
+  return points;
+}
+
+EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, const Scene& mesh,
+                          std::vector<Eigen::Vector3f> reference_points, double tau_m) {
+  if (mesh.triangles.empty()) {
+    throw Error("evaluation", "reference", "the reference mesh has no triangles");
+  }
+  if (reconstruction.empty()) {
+    throw Error("evaluation", "reconstruction", "the reconstruction has no points");
+  }
+  if (reference_points.empty()) {
+    reference_points = sampleSurface(mesh, 0.01);
+  }
+  EvaluationResult r;
+  r.tau_m = tau_m;
+  r.reconstructed_points = reconstruction.size();
+  r.reference_points = reference_points.size();
+  r.point_errors_m = distancesToMesh(reconstruction, mesh);
+  r.accuracy_mean_m = mean(r.point_errors_m);
+  r.accuracy_median_m = quantile(r.point_errors_m, 0.5);
+  r.accuracy_p90_m = quantile(r.point_errors_m, 0.9);
+  r.precision = fractionWithin(r.point_errors_m, tau_m);
+  r.floating_points = static_cast<std::size_t>(std::count_if(
+      r.point_errors_m.begin(), r.point_errors_m.end(), [](float d) { return d > 0.10f; }));
+  const std::vector<float> to_reconstruction = distancesToPoints(reference_points, reconstruction);
+  r.completeness = fractionWithin(to_reconstruction, tau_m);
+  r.fscore = r.precision + r.completeness > 0.0
+                 ? 2.0 * r.precision * r.completeness / (r.precision + r.completeness)
+                 : 0.0;
+  r.chamfer_m = r.accuracy_mean_m + mean(to_reconstruction);
+  return r;
+}
+
+std::string EvaluationResult::toJson() const {
+  return nlohmann::json{{"tau_m", tau_m},
+                        {"reconstructed_points", reconstructed_points},
+                        {"reference_points", reference_points},
+                        {"accuracy_mean_m", accuracy_mean_m},
+                        {"accuracy_median_m", accuracy_median_m},
+                        {"accuracy_p90_m", accuracy_p90_m},
+                        {"precision", precision},
+                        {"completeness", completeness},
+                        {"fscore", fscore},
+                        {"chamfer_m", chamfer_m},
+                        {"floating_points_over_10cm", floating_points}}
+      .dump(2);
+}
+
+}  // namespace sonarcarve

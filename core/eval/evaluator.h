@@ -1,0 +1,43 @@
+// Evaluation of a reconstruction against a ground-truth mesh (all in world metres):
+//   accuracy      distance from each reconstructed point to the mesh (mean, median, p90)
+//   precision     fraction of reconstructed points within tau of the mesh
+//   completeness  fraction of the reference surface points (the simulator's visible points,
+//                 or the mesh sampled every 1 cm) within tau of the reconstruction
+//   F-score       harmonic mean of precision and completeness at tau
+//   Chamfer       mean accuracy + mean distance from reference points to the reconstruction
+// Per-point errors are kept for colouring. Distances use VTK's static locators.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "sim/scene.h"
+
+namespace sonarcarve {
+
+struct EvaluationResult {
+  double tau_m = 0.05;
+  std::size_t reconstructed_points = 0;
+  std::size_t reference_points = 0;
+  double accuracy_mean_m = 0.0;
+  double accuracy_median_m = 0.0;
+  double accuracy_p90_m = 0.0;
+  double precision = 0.0;
+  double completeness = 0.0;
+  double fscore = 0.0;
+  double chamfer_m = 0.0;
+  std::size_t floating_points = 0;    ///< reconstructed points farther than 10 cm from the mesh
+  std::vector<float> point_errors_m;  ///< per reconstructed point
+
+  std::string toJson() const;
+};
+
+/// `reference_points` may be empty: the mesh is then sampled every 1 cm.
+EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, const Scene& mesh,
+                          std::vector<Eigen::Vector3f> reference_points, double tau_m = 0.05);
+
+/// Points spread over the mesh surface about every `spacing_m` (deterministic).
+std::vector<Eigen::Vector3f> sampleSurface(const Scene& mesh, double spacing_m);
+
+}  // namespace sonarcarve

@@ -1,0 +1,211 @@
+#include "io/point_cloud_ply.h"
+
+#include <bit>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "common/error.h"
+#include "io/atomic_file.h"
+#include "io/ply_check.h"
+
+namespace sonarcarve {
+namespace {
+
+struct Property {
+  std::string name;
+  std::string type;
+  int size = 0;
+};
+
+int sizeOf(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8")
+    return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16")
+    return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+      type == "float32")
+    return 4;
+  if (type == "double" || type == "float64")
+    return 8;
+  return 0;
+}
+
+double decode(const char* bytes, const std::string& type, bool swap) {
+  char b[8];
+  const int n = sizeOf(type);
+  for (int i = 0; i < n; ++i) {
+    b[i] = swap ? bytes[n - 1 - i] : bytes[i];
+  }
+  const auto as = [&](auto value) {
+    std::memcpy(&value, b, sizeof(value));
+    return static_cast<double>(value);
+  };
+  if (type == "char" || type == "int8")
+    return as(std::int8_t{});
+  if (type == "uchar" || type == "uint8")
+    return as(std::uint8_t{});
+  if (type == "short" || type == "int16")
+    return as(std::int16_t{});
+  if (type == "ushort" || type == "uint16")
+    return as(std::uint16_t{});
+  if (type == "int" || type == "int32")
+    return as(std::int32_t{});
+  if (type == "uint" || type == "uint32")
+    return as(std::uint32_t{});
+  if (type == "float" || type == "float32")
+    return as(float{});
+  return as(double{});
+}
+
+}  // namespace
+
+void writePointCloudPly(const std::filesystem::path& path, const PointCloud& cloud,
+                        const std::map<std::string, std::vector<std::uint32_t>>& uint_properties) {
+  const std::size_t n = cloud.positions.size();
+  for (const auto& [name, values] : cloud.properties) {
+    if (values.size() != n) {
+      throw Error(path.string(), "property " + name, "expected one value per point");
+    }
+  }
+  for (const auto& [name, values] : uint_properties) {
+    if (values.size() != n) {
+      throw Error(path.string(), "property " + name, "expected one value per point");
+    }
+  }
+  std::ostringstream out;
+  out << "ply\nformat binary_little_endian 1.0\ncomment SonarCarve point cloud: world frame, "
+         "metres\nelement vertex "
+      << n << "\nproperty float x\nproperty float y\nproperty float z\n";
+  for (const auto& entry : cloud.properties) {
+    out << "property float " << entry.first << "\n";
+  }
+  for (const auto& entry : uint_properties) {
+    out << "property uint " << entry.first << "\n";
+  }
+  out << "end_header\n";
+  std::string bytes = out.str();
+  const std::size_t record = 4 * (3 + cloud.properties.size() + uint_properties.size());
+  const std::size_t header = bytes.size();
+  bytes.resize(header + record * n);
+  static_assert(std::endian::native == std::endian::little, "writer assumes little-endian");
+  for (std::size_t i = 0; i < n; ++i) {
+    char* p = bytes.data() + header + i * record;
+    std::memcpy(p, cloud.positions[i].data(), 12);
+    p += 12;
+    for (const auto& entry : cloud.properties) {
+      std::memcpy(p, &entry.second[i], 4);
+      p += 4;
+    }
+    for (const auto& entry : uint_properties) {
+      std::memcpy(p, &entry.second[i], 4);
+      p += 4;
+    }
+  }
+  writeFileAtomically(path, bytes);
+}
+
+PointCloud readPointCloudPly(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  if (!std::filesystem::is_regular_file(path)) {
+    throw Error(file, "", "point cloud not found");
+  }
+  checkPlyFile(path);  // header well formed and body long enough
+  std::ifstream in(path, std::ios::binary);
+  std::string line, format;
+  std::vector<Property> props;
+  std::size_t count = 0;
+  bool in_vertex = false, seen_vertex = false;
+  int line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "format") {
+      words >> format;
+    } else if (keyword == "element") {
+      std::string name;
+      words >> name;
+      in_vertex = name == "vertex";
+      if (in_vertex) {
+        words >> count;
+        seen_vertex = true;
+      } else if (!seen_vertex) {
+        throw Error(file, "line " + std::to_string(line_number),
+                    "expected the vertex element first");
+      }
+    } else if (keyword == "property" && in_vertex) {
+      Property p;
+      words >> p.type;
+      if (p.type == "list") {
+        throw Error(file, "line " + std::to_string(line_number), "list property on vertices");
+      }
+      words >> p.name;
+      p.size = sizeOf(p.type);
+      props.push_back(p);
+    } else if (keyword == "end_header") {
+      break;
+    }
+  }
+  int ix = -1, iy = -1, iz = -1;
+  for (std::size_t k = 0; k < props.size(); ++k) {
+    if (props[k].name == "x")
+      ix = static_cast<int>(k);
+    if (props[k].name == "y")
+      iy = static_cast<int>(k);
+    if (props[k].name == "z")
+      iz = static_cast<int>(k);
+  }
+  if (!seen_vertex || ix < 0 || iy < 0 || iz < 0) {
+    throw Error(file, "header", "expected a vertex element with x, y and z");
+  }
+  PointCloud cloud;
+  cloud.positions.resize(count);
+  for (const auto& p : props) {
+    if (p.name != "x" && p.name != "y" && p.name != "z") {
+      cloud.properties[p.name].resize(count);
+    }
+  }
+  std::vector<double> values(props.size());
+  const bool ascii = format == "ascii";
+  const bool swap = format == "binary_big_endian";
+  std::size_t record = 0;
+  for (const auto& p : props)
+    record += static_cast<std::size_t>(p.size);
+  std::vector<char> buffer(record);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (ascii) {
+      for (auto& v : values) {
+        if (!(in >> v)) {
+          throw Error(file, "vertex " + std::to_string(i),
+                      "expected " + std::to_string(props.size()) + " numbers");
+        }
+      }
+    } else {
+      if (!in.read(buffer.data(), static_cast<std::streamsize>(record))) {
+        throw Error(file, "vertex " + std::to_string(i), "file ends inside the vertex data");
+      }
+      std::size_t offset = 0;
+      for (std::size_t k = 0; k < props.size(); ++k) {
+        values[k] = decode(buffer.data() + offset, props[k].type, swap);
+        offset += static_cast<std::size_t>(props[k].size);
+      }
+    }
+    cloud.positions[i] =
+        Eigen::Vector3d(values[static_cast<std::size_t>(ix)], values[static_cast<std::size_t>(iy)],
+                        values[static_cast<std::size_t>(iz)])
+            .cast<float>();
+    for (std::size_t k = 0; k < props.size(); ++k) {
+      auto it = cloud.properties.find(props[k].name);
+      if (it != cloud.properties.end()) {
+        it->second[i] = static_cast<float>(values[k]);
+      }
+    }
+  }
+  return cloud;
+}
+
+}  // namespace sonarcarve

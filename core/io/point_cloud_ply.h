@@ -1,0 +1,27 @@
+// Point clouds as PLY with named per-point properties (VTK 9.1's PLY writer keeps only x, y, z,
+// so SonarCarve writes and reads its point clouds itself). Writing: binary little-endian,
+// float properties then uint ones, atomically. Reading: ascii or binary (either byte order),
+// any numeric vertex property, converted to float; the vertex element must come first.
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sonarcarve {
+
+struct PointCloud {
+  std::vector<Eigen::Vector3f> positions;
+  std::map<std::string, std::vector<float>> properties;  ///< one value per point
+};
+
+/// `uint_properties` are written as uint32. Throws Error if a property's size differs.
+void writePointCloudPly(
+    const std::filesystem::path& path, const PointCloud& cloud,
+    const std::map<std::string, std::vector<std::uint32_t>>& uint_properties = {});
+/// Throws Error naming the file and the place on a missing, truncated or malformed file.
+PointCloud readPointCloudPly(const std::filesystem::path& path);
+
+}  // namespace sonarcarve

@@ -1,0 +1,145 @@
+#include "occlusion/occlusion_resolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <tuple>
+
+namespace sonarcarve {
+
+OcclusionResolver::OcclusionResolver(const std::vector<Eigen::Vector3i>& voxels,
+                                     const std::vector<float>& values, const SonarModel& sonar,
+                                     const CarveParams& params)
+    : geometry_(sonar, params), voxel_size_m_(params.voxel_size_m) {
+  elevation_step_ = params.elevation_step_rad;
+  elevation_bins_ =
+      std::max(1, static_cast<int>(std::ceil(sonar.verticalAperture() / elevation_step_)));
+  // Group the voxels by block of 8^3 so that whole groups are culled against each frustum.
+  constexpr int kSide = VoxelMap::kBlockSide;
+  const auto blockOf = [](const Eigen::Vector3i& v) {
+    return Eigen::Vector3i(v.x() >> 3, v.y() >> 3, v.z() >> 3);  // floor division by 8
+  };
+  std::vector<std::size_t> order(voxels.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const Eigen::Vector3i ba = blockOf(voxels[a]), bb = blockOf(voxels[b]);
+    return std::tie(ba.z(), ba.y(), ba.x()) < std::tie(bb.z(), bb.y(), bb.x());
+  });
+  const double block = kSide * voxel_size_m_;
+  block_radius_ = 0.5 * std::sqrt(3.0) * block;
+  Eigen::Vector3i current(0, 0, 0);
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    const Eigen::Vector3i& v = voxels[order[n]];
+    if (n == 0 || blockOf(v) != current) {
+      current = blockOf(v);
+      block_begin_.push_back(static_cast<std::uint32_t>(centres_.size()));
+      block_centres_.push_back(
+          ((current.cast<double>() + Eigen::Vector3d::Constant(0.5)) * block).cast<float>());
+    }
+    centres_.push_back(
+        ((v.cast<double>() + Eigen::Vector3d::Constant(0.5)) * voxel_size_m_).cast<float>());
+    intensities_.push_back(values[order[n]]);
+  }
+  block_begin_.push_back(static_cast<std::uint32_t>(centres_.size()));
+  views_ = std::make_unique<std::atomic<std::uint32_t>[]>(centres_.size());
+}
+
+std::vector<OcclusionResolver::Cell> OcclusionResolver::zBuffer(
+    const Eigen::Isometry3d& T_world_sonar) const {
+  const SonarModel& sonar = geometry_.sonar();
+  const int beams = sonar.cols();
+  const int bins = elevation_bins_;
+  std::vector<Cell> zbuffer(static_cast<std::size_t>(beams * bins));
+  const Eigen::Isometry3d T_sonar_world = T_world_sonar.inverse();
+  const Eigen::Matrix3f R = T_sonar_world.linear().cast<float>();
+  const Eigen::Vector3f t = T_sonar_world.translation().cast<float>();
+  const float half_aperture = static_cast<float>(0.5 * sonar.verticalAperture());
+  const float inv_step = static_cast<float>(1.0 / elevation_step_);
+  const float voxel_radius = static_cast<float>(0.5 * std::sqrt(3.0) * voxel_size_m_);
+  const float rmin = static_cast<float>(geometry_.rangeMin());
+  const float rmax = static_cast<float>(geometry_.rangeMax());
+
+  for (std::size_t g = 0; g + 1 < block_begin_.size(); ++g) {
+    if (!geometry_.sphereMayTouchFrustum((R * block_centres_[g] + t).cast<double>(),
+                                         block_radius_)) {
+      continue;
+    }
+    for (std::uint32_t i = block_begin_[g]; i < block_begin_[g + 1]; ++i) {
+      const Eigen::Vector3f p = R * centres_[i] + t;
+      const float r = p.norm();
+      if (r < rmin || r >= rmax || r <= voxel_radius) {
+        continue;
+      }
+      const float bearing = fastAtan2(p.y(), p.x());
+      const float elevation = std::asin(std::clamp(-p.z() / r, -1.0f, 1.0f));
+      // Angular footprint of the voxel: its half-diagonal seen from the sonar.
+      const float spread = std::asin(voxel_radius / r);
+      if (std::abs(elevation) - spread > half_aperture) {
+        continue;
+      }
+      int beam_lo = geometry_.beamOf(bearing - spread);
+      int beam_hi = geometry_.beamOf(bearing + spread);
+      if (beam_lo < 0 && beam_hi < 0) {
+        continue;
+      }
+      beam_lo = beam_lo < 0 ? 0 : beam_lo;
+      beam_hi = beam_hi < 0 ? beams - 1 : beam_hi;
+      const int e_lo =
+          std::max(0, static_cast<int>((elevation - spread + half_aperture) * inv_step));
+      const int e_hi =
+          std::min(bins - 1, static_cast<int>((elevation + spread + half_aperture) * inv_step));
+      for (int j = beam_lo; j <= beam_hi; ++j) {
+        Cell* row = &zbuffer[static_cast<std::size_t>(j * bins)];
+        for (int e = e_lo; e <= e_hi; ++e) {
+          if (row[e].voxel < 0 || r < row[e].range) {
+            row[e] = {r, static_cast<std::int32_t>(i)};
+          }
+        }
+      }
+    }
+  }
+  return zbuffer;
+}
+
+std::vector<float> OcclusionResolver::firstReturnRanges(
+    const Eigen::Isometry3d& T_world_sonar) const {
+  const std::vector<Cell> zbuffer = zBuffer(T_world_sonar);
+  std::vector<float> ranges(zbuffer.size(), std::numeric_limits<float>::infinity());
+  for (std::size_t i = 0; i < zbuffer.size(); ++i) {
+    if (zbuffer[i].voxel >= 0) {
+      ranges[i] = zbuffer[i].range;
+    }
+  }
+  return ranges;
+}
+
+void OcclusionResolver::addView(const Eigen::Isometry3d& T_world_sonar) {
+  const std::vector<Cell> zbuffer = zBuffer(T_world_sonar);
+  // Each voxel that won at least one cell gains one view. Several cells may name the same
+  // voxel: count it once per frame.
+  std::vector<std::int32_t> winners;
+  for (const Cell& c : zbuffer) {
+    if (c.voxel >= 0) {
+      winners.push_back(c.voxel);
+    }
+  }
+  std::sort(winners.begin(), winners.end());
+  winners.erase(std::unique(winners.begin(), winners.end()), winners.end());
+  for (std::int32_t w : winners) {
+    views_[static_cast<std::size_t>(w)].fetch_add(1, std::memory_order_relaxed);
+  }
+}
+
+SurfacePoints OcclusionResolver::result(std::uint32_t min_views) const {
+  SurfacePoints points;
+  for (std::size_t i = 0; i < centres_.size(); ++i) {
+    const std::uint32_t v = views_[i].load(std::memory_order_relaxed);
+    if (v >= min_views && v > 0) {
+      points.push_back({centres_[i], intensities_[i], v});
+    }
+  }
+  return points;
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,27 @@
+// SurfacePoints: the reconstruction's output, the front surface of the structure as points in
+// the world frame (NED, metres), each with its carved intensity and the number of views in
+// which it was the first return.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace sonarcarve {
+
+struct SurfacePoint {
+  Eigen::Vector3f position_m;
+  float intensity = 0.0f;
+  std::uint32_t views = 0;
+};
+
+using SurfacePoints = std::vector<SurfacePoint>;
+
+/// Binary PLY with vertex properties x, y, z (float), intensity (float), views (uint).
+/// Atomic: a failure keeps the previous file.
+void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path);
+/// Reads x, y, z (and intensity, views when present) of a PLY point cloud.
+SurfacePoints readSurfacePointsPly(const std::filesystem::path& path);
+
+}  // namespace sonarcarve

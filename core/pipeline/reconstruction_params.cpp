@@ -1,0 +1,118 @@
+#include "pipeline/reconstruction_params.h"
+
+#include <sstream>
+
+#include "common/error.h"
+#include "io/yaml_fields.h"
+
+namespace sonarcarve {
+
+ReconstructionParams ReconstructionParams::fromYamlFile(const std::string& path) {
+  const YamlFields f(path);
+  const YAML::Node root = f.load();
+  ReconstructionParams p;
+  if (root["engine"]) {
+    p.engine = f.text(root["engine"], "engine");
+    if (p.engine != "fast" && p.engine != "reference") {
+      f.fail(root["engine"], "engine", "expected 'fast' or 'reference'");
+    }
+  }
+  if (root["voxel_size_m"]) {
+    p.carve.voxel_size_m = f.positive(root["voxel_size_m"], "voxel_size_m");
+  }
+  if (root["intensity_threshold"]) {
+    p.carve.intensity_threshold = f.number(root["intensity_threshold"], "intensity_threshold");
+  }
+  if (root["elevation_step_deg"]) {
+    p.carve.elevation_step_rad =
+        degToRad(f.positive(root["elevation_step_deg"], "elevation_step_deg"));
+  }
+  if (root["range_min_m"]) {
+    p.carve.range_min_m = f.number(root["range_min_m"], "range_min_m");
+  }
+  if (root["range_max_m"]) {
+    p.carve.range_max_m = f.number(root["range_max_m"], "range_max_m");
+  }
+  if (const YAML::Node region = root["region"]) {
+    const auto lo = f.numbers(f.child(region, "region", "min_m"), "region.min_m", 3);
+    const auto hi = f.numbers(f.child(region, "region", "max_m"), "region.max_m", 3);
+    p.carve.region = Eigen::AlignedBox3d(Eigen::Vector3d(lo[0], lo[1], lo[2]),
+                                         Eigen::Vector3d(hi[0], hi[1], hi[2]));
+    if (p.carve.region->isEmpty()) {
+      f.fail(region, "region", "expected min_m below max_m on every axis");
+    }
+  }
+  if (const YAML::Node frames = root["frames"]) {
+    if (frames["first"]) {
+      p.first_frame = static_cast<std::size_t>(f.number(frames["first"], "frames.first"));
+    }
+    if (frames["last"]) {
+      p.last_frame = static_cast<long>(f.number(frames["last"], "frames.last"));
+    }
+    if (frames["stride"]) {
+      p.stride = static_cast<std::size_t>(f.positiveInt(frames["stride"], "frames.stride"));
+    }
+  }
+  if (root["occlusion_aware_carving"]) {
+    bool value = true;
+    if (!YAML::convert<bool>::decode(root["occlusion_aware_carving"], value)) {
+      f.fail(root["occlusion_aware_carving"], "occlusion_aware_carving", "expected true or false");
+    }
+    p.occlusion_aware_carving = value;
+  }
+  if (root["min_views"]) {
+    p.min_views = static_cast<std::uint32_t>(f.positiveInt(root["min_views"], "min_views"));
+  }
+  try {
+    p.validate();
+  } catch (const Error& e) {
+    throw Error(path, e.place(), e.message());
+  }
+  return p;
+}
+
+void ReconstructionParams::validate() const {
+  if (engine != "fast" && engine != "reference") {
+    throw Error("parameters", "engine", "expected 'fast' or 'reference'");
+  }
+  if (!(carve.voxel_size_m > 0.0)) {
+    throw Error("parameters", "voxel_size_m", "expected a positive voxel size");
+  }
+  if (!(carve.elevation_step_rad > 0.0)) {
+    throw Error("parameters", "elevation_step_deg", "expected a positive elevation step");
+  }
+  if (carve.range_min_m < 0.0 || carve.range_max_m < 0.0 ||
+      (carve.range_max_m > 0.0 && carve.range_max_m <= carve.range_min_m)) {
+    throw Error("parameters", "range_min_m/range_max_m", "expected 0 <= min < max (0 = sonar's)");
+  }
+  if (stride < 1) {
+    throw Error("parameters", "frames.stride", "expected a stride of at least 1");
+  }
+}
+
+std::string ReconstructionParams::toYaml() const {
+  std::ostringstream out;
+  out << "# SonarCarve reconstruction parameters (docs: sonarcarve-cli reconstruct --help)\n"
+      << "engine: " << engine << "\n"
+      << "voxel_size_m: " << shortestNumber(carve.voxel_size_m) << "\n"
+      << "intensity_threshold: " << shortestNumber(carve.intensity_threshold) << "\n"
+      << "elevation_step_deg: " << shortestDegrees(carve.elevation_step_rad) << "\n"
+      << "range_min_m: " << shortestNumber(carve.range_min_m) << "\n"
+      << "range_max_m: " << shortestNumber(carve.range_max_m) << "\n";
+  if (carve.region) {
+    const auto& lo = carve.region->min();
+    const auto& hi = carve.region->max();
+    out << "region:\n"
+        << "  min_m: [" << shortestNumber(lo.x()) << ", " << shortestNumber(lo.y()) << ", "
+        << shortestNumber(lo.z()) << "]\n"
+        << "  max_m: [" << shortestNumber(hi.x()) << ", " << shortestNumber(hi.y()) << ", "
+        << shortestNumber(hi.z()) << "]\n";
+  }
+  out << "frames: {first: " << first_frame << ", last: " << last_frame << ", stride: " << stride
+      << "}\n"
+      << "min_views: " << min_views << "\n"
+      << "occlusion_aware_carving: " << (occlusion_aware_carving ? "true" : "false") << "\n";
+  return out.str();
+}
+
+}  // namespace sonarcarve
