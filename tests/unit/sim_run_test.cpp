@@ -22,7 +22,7 @@ SimulationRequest riserRequest(const std::filesystem::path& out) {
                            NoiseSpec{},
                            NavErrorSpec{},
                            false,
-                           4,
+                           12,  // from 1 m above the riser's top to its first module
                            out};
 }
 
@@ -47,10 +47,10 @@ TEST(SimulationRun, WritesAMissionWithGroundTruth) {
   SimulationRequest request = riserRequest(dir.path() / "riser");
   request.nav_error = {0.01, 0.1, 3};
   const SimulationResult result = runSimulation(request, progress);
-  EXPECT_EQ(result.frames_written, 4u);
+  EXPECT_EQ(result.frames_written, 12u);
   EXPECT_FALSE(result.cancelled);
   const Mission mission = readMission(dir.path() / "riser");
-  EXPECT_EQ(mission.frames.size(), 4u);
+  EXPECT_EQ(mission.frames.size(), 12u);
   EXPECT_TRUE(checkFrames(mission).empty());
   EXPECT_EQ(mission.sonar.cols(), 650);
   // The recorded navigation carries the error; the ground-truth poses do not.
