@@ -1,6 +1,7 @@
 #include "carve/occupancy_export.h"
 
 #include <octomap/OcTree.h>
+#include <algorithm>
 
 #include "common/error.h"
 #include "io/atomic_file.h"
@@ -11,7 +12,8 @@ void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path) {
   octomap::OcTree tree(map.voxelSize());
   for (std::size_t b = 0; b < map.blockCount(); ++b) {
     const float* v = map.values(b);
-    if (v == nullptr) {
+    if (v == nullptr || std::none_of(v, v + VoxelMap::kBlockVoxels,
+                                     [](float x) { return x > 0.0f && x < VoxelMap::kUnknown; })) {
       continue;
     }
     const Eigen::Vector3i base = (map.blockCoords(b) + map.firstBlock()) * VoxelMap::kBlockSide;

@@ -1,7 +1,8 @@
 // Exporting a carved map as a standard OctoMap occupancy tree (.bt), which OctoMap's own tools
-// (octovis) open. Occupied voxels are written as occupied; the carved voxels of blocks that
-// also hold occupied or unknown voxels are written as free. Wholly free blocks are left out
-// (they would be tens of millions of voxels): a viewer shows them as unknown.
+// (octovis) open. Occupied voxels are written as occupied, and the carved voxels of the blocks
+// (8^3 voxels) that hold occupied ones as free: the free space around the structure. The rest
+// of the carved water is left out (tens of millions of voxels, gigabytes as octree nodes):
+// a viewer shows it as unknown.
 #pragma once
 
 #include <filesystem>

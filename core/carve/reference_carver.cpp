@@ -75,11 +75,14 @@ void ReferenceCarver::integrate(const cv::Mat& image, const Eigen::Isometry3d& T
       for (std::size_t k = 0; k < arc_cos_.size(); ++k) {
         const Eigen::Vector3d p_sonar(r * arc_cos_[k] * cb, r * arc_cos_[k] * sb, -r * arc_sin_[k]);
         const Eigen::Vector3d p = R * p_sonar + t;
-        if (params_.region && !params_.region->contains(p)) {
-          continue;
-        }
         octomap::OcTreeKey key;
         if (!tree_->coordToKeyChecked(p.x(), p.y(), p.z(), key)) {
+          continue;
+        }
+        // The map holds the voxels whose centres lie in the region.
+        if (params_.region &&
+            !params_.region->contains(Eigen::Vector3d(
+                tree_->keyToCoord(key[0]), tree_->keyToCoord(key[1]), tree_->keyToCoord(key[2])))) {
           continue;
         }
         tree_->updateMin(key, intensity);

@@ -130,6 +130,41 @@ void VoxelMap::forEachOccupied(const std::function<void(const Eigen::Vector3i&, 
   }
 }
 
+void VoxelMap::forEachOccupiedOnShell(
+    const std::function<void(const Eigen::Vector3i&, float)>& f) const {
+  const auto occupied = [](float v) { return v > 0.0f && v < kUnknown; };
+  constexpr int kS = kBlockSide;
+  for (std::size_t b = 0; b < state_.size(); ++b) {
+    const float* v = values(b);
+    if (v == nullptr) {
+      continue;
+    }
+    const Eigen::Vector3i base = (blockCoords(b) + first_block_) * kS;
+    for (int i = 0; i < kBlockVoxels; ++i) {
+      if (!occupied(v[i])) {
+        continue;
+      }
+      const Eigen::Vector3i in(i % kS, (i / kS) % kS, i / (kS * kS));
+      bool shell = false;
+      for (int axis = 0; axis < 3 && !shell; ++axis) {
+        for (int step : {-1, 1}) {
+          Eigen::Vector3i n = in;
+          n[axis] += step;
+          const bool inside = n[axis] >= 0 && n[axis] < kS;
+          const float neighbour = inside ? v[(n.z() * kS + n.y()) * kS + n.x()] : value(base + n);
+          if (!occupied(neighbour)) {
+            shell = true;
+            break;
+          }
+        }
+      }
+      if (shell) {
+        f(base + in, v[i]);
+      }
+    }
+  }
+}
+
 std::size_t VoxelMap::occupiedCount() const {
   std::size_t n = 0;
   forEachOccupied([&](const Eigen::Vector3i&, float) { ++n; });

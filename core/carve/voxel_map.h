@@ -69,6 +69,10 @@ class VoxelMap {
 
   /// Calls f(global voxel index, value) for every occupied voxel (0 < value < inf).
   void forEachOccupied(const std::function<void(const Eigen::Vector3i&, float)>& f) const;
+  /// Like forEachOccupied, but only voxels with at least one of their six face neighbours
+  /// not occupied: the shell that can be a first return. Voxels buried inside occupied
+  /// space (under a seabed that no view could carve) are always behind a neighbour.
+  void forEachOccupiedOnShell(const std::function<void(const Eigen::Vector3i&, float)>& f) const;
   std::size_t occupiedCount() const;
   std::size_t blockCount(BlockState state) const;
   /// Bytes held by the map (block table and block contents).

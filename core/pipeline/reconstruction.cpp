@@ -170,13 +170,15 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
     occupied.clear();
     values.clear();
     if (fast) {
-      result.map->forEachOccupied([&](const Eigen::Vector3i& v, float value) {
+      result.occupied_voxels = result.map->occupiedCount();
+      result.map->forEachOccupiedOnShell([&](const Eigen::Vector3i& v, float value) {
         occupied.push_back(v);
         values.push_back(value);
       });
       result.map_bytes = result.map->memoryBytes();
     } else {
       occupied = reference->occupiedVoxels();
+      result.occupied_voxels = occupied.size();
       for (const auto& v : occupied) {
         values.push_back(reference->value(v));
       }
@@ -221,7 +223,6 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   }
   std::sort(carve_ms.begin(), carve_ms.end());
   result.carve_ms_median = carve_ms[carve_ms.size() / 2];
-  result.occupied_voxels = occupied.size();
 
   // Occlusion resolution: frames in parallel, cancellable between frames.
   const auto t_occlusion = Clock::now();

@@ -48,7 +48,7 @@ struct ReconstructionResult {
   std::size_t frames_used = 0;
   std::vector<FrameProblem> skipped;
   bool cancelled = false;
-  std::size_t occupied_voxels = 0;
+  std::size_t occupied_voxels = 0;  ///< all occupied voxels of the carved map
   std::size_t map_bytes = 0;
   double carve_ms_median = 0.0;  ///< per frame
   double occlusion_ms_per_frame = 0.0;

@@ -25,8 +25,11 @@ namespace sonarcarve {
 
 struct ImagingSettings {
   double elevation_step_rad = 0.1 * 3.14159265358979323846 / 180.0;  ///< ray spacing in theta
-  int rays_per_beam = 2;            ///< rays across each beam's bearing interval
-  double gain = 1000.0;             ///< counts for a full aperture of unit, normal returns
+  int rays_per_beam = 2;  ///< rays across each beam's bearing interval
+  /// Counts for a full aperture of unit, normal returns. High enough that the weak returns
+  /// of a seabed at grazing incidence (thousandths of a facing wall's, spread over many
+  /// range bins) survive the rounding to whole counts of 16-bit frames.
+  double gain = 20000.0;
   double spreading_exponent = 0.0;  ///< intensity times r^-k (spreading loss); 0 = off
   double tvg_exponent = 0.0;        ///< intensity times r^k (range-dependent gain); 0 = off
   /// Hits reported as seen (HitSink) need at least this cos(incidence): a surface met at more
