@@ -96,8 +96,7 @@ TEST(CarveAgreement, FastAndReferenceEnginesAgreeOnOccupiedVoxels) {
   EXPECT_GE(of_reference, 0.99);
   // The other way is looser: the fast engine reads each voxel through the pixel of its centre,
   // while arcs of a neighbouring bin that cross the voxel also carve it in the reference.
-  // About 4 % of the fast engine's voxels are such, all next to the surface (see
-  // docs/benchmarks.md).
+  // On this case 4 % of the fast engine's voxels have no reference voxel within one voxel.
   EXPECT_GE(of_fast, 0.95);
 }
 

@@ -1,0 +1,63 @@
+// End to end, as a user runs it: simulate the noise-free riser demo, reconstruct it at the
+// default parameters (2 cm voxels), evaluate against the ground truth, open the map with
+// OctoMap's own tools.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "support/cli_runner.h"
+#include "support/test_support.h"
+
+namespace sonarcarve {
+namespace {
+
+using test::quoted;
+using test::runCli;
+
+TEST(RiserAccuracy, NoiseFreeRiserIsReconstructedWithinTheVoxelSize) {
+  test::ScratchDir dir;
+  const auto mission = dir.path() / "riser";
+  const auto out = dir.path() / "reconstruction";
+  const auto sim = runCli("simulate --scene riser --noise none --out " + quoted(mission));
+  ASSERT_EQ(sim.exit_code, 0) << sim.output;
+  const auto rec = runCli("reconstruct " + quoted(mission) + " --out " + quoted(out));
+  ASSERT_EQ(rec.exit_code, 0) << rec.output;
+  std::ifstream in(out / "report.json");
+  const auto report = nlohmann::json::parse(in);
+  const auto& e = report.at("evaluation");
+  // 2 cm voxels and 2 cm range bins: a voxel centre is within about a voxel of the surface.
+  EXPECT_LE(e.at("accuracy_median_m").get<double>(), 0.02) << e.dump(2);
+  EXPECT_LE(e.at("accuracy_p90_m").get<double>(), 0.05) << e.dump(2);
+  EXPECT_GE(e.at("completeness").get<double>(), 0.90) << e.dump(2);
+
+  // The stand-alone evaluate verb gives the same figures from the exported files.
+  const auto eval = runCli("evaluate --json --reference " + quoted(mission / "ground_truth.ply") +
+                           " --reconstruction " + quoted(out / "surface_points.ply") +
+                           " --visible " + quoted(mission / "visible_points.ply"));
+  ASSERT_EQ(eval.exit_code, 0) << eval.output;
+  const auto j = nlohmann::json::parse(eval.output);
+  EXPECT_NEAR(j.at("completeness").get<double>(), e.at("completeness").get<double>(), 1e-9);
+  EXPECT_EQ(j.at("reconstructed_points"), report.at("surface_points"));
+
+  // OctoMap's own bt2vrml reads the exported occupancy tree.
+  if (std::system("command -v bt2vrml > /dev/null 2>&1") == 0) {
+    const std::string command = "bt2vrml " + quoted(out / "map.bt") + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string text;
+    char buffer[512];
+    while (std::fgets(buffer, sizeof(buffer), pipe) != nullptr)
+      text += buffer;
+    ASSERT_EQ(pclose(pipe), 0) << text;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(text, m, std::regex("Finished writing (\\d+) voxels"))) << text;
+    EXPECT_GT(std::stol(m[1]), 1000);
+  } else {
+    ADD_FAILURE() << "bt2vrml (Debian's octomap-tools) is not installed";
+  }
+}
+
+}  // namespace
+}  // namespace sonarcarve

@@ -1,0 +1,174 @@
+// The reconstruction pipeline on a small simulated mission: results, skipped frames,
+// cancellation, map updates for viewers, parameters in YAML.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "common/error.h"
+#include "pipeline/reconstruction.h"
+#include "sim/demo_scenes.h"
+#include "sim/simulation_run.h"
+#include "support/test_support.h"
+
+namespace sonarcarve {
+namespace {
+
+class Pipeline : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new test::ScratchDir();
+    TrajectorySpec trajectory;
+    SimulationRequest request{
+        makeDemoScene("riser"), "riser",        paperSonar(), trajectory, {},
+        NoiseSpec::none(),      NavErrorSpec{}, false,        24,         dir_->path() / "riser"};
+    SilentProgress progress;
+    runSimulation(request, progress);
+  }
+  static void TearDownTestSuite() { delete dir_; }
+  static std::filesystem::path mission() { return dir_->path() / "riser"; }
+  static test::ScratchDir* dir_;
+};
+test::ScratchDir* Pipeline::dir_ = nullptr;
+
+class CancelAfter : public Progress {
+ public:
+  explicit CancelAfter(std::size_t reports) : left_(reports) {}
+  void report(const std::string&, std::size_t, std::size_t) override {
+    if (left_ > 0)
+      --left_;
+  }
+  bool cancelled() const override { return left_ == 0; }
+
+ private:
+  std::atomic<std::size_t> left_;
+};
+
+struct Recorder : ReconstructionObserver {
+  std::vector<std::size_t> carved;
+  std::vector<FrameProblem> skipped;
+  std::map<std::size_t, std::vector<Eigen::Vector3f>> blocks;  // the viewer's copy of the map
+  void frameCarved(std::size_t index, const Frame&, const Eigen::Isometry3d&) override {
+    carved.push_back(index);
+  }
+  void frameSkipped(const FrameProblem& p) override { skipped.push_back(p); }
+  void mapUpdated(const MapUpdate& update) override {
+    for (const auto& b : update.blocks) {
+      blocks[b.block] = b.points;
+    }
+  }
+};
+
+TEST_F(Pipeline, ReconstructsTheRiserTopFromTheFramesThatSeeIt) {
+  SilentProgress progress;
+  const Mission m = readMission(mission());
+  const ReconstructionResult r = reconstruct(m, ReconstructionParams{}, progress);
+  EXPECT_EQ(r.frames_used, 24u);
+  EXPECT_TRUE(r.skipped.empty());
+  EXPECT_FALSE(r.cancelled);
+  ASSERT_GT(r.surface.size(), 500u);
+  // Surface points lie on the riser or its first module, on the side facing the sonar.
+  for (const SurfacePoint& p : r.surface) {
+    ASSERT_LT(std::hypot(p.position_m.x(), p.position_m.y()), 0.45f + 0.1f)
+        << p.position_m.transpose();
+    ASSERT_GE(p.views, ReconstructionParams::kDefaultMinViews);
+    ASSERT_GT(p.intensity, 0.0f);
+  }
+}
+
+TEST_F(Pipeline, ViewerUpdatesAddUpToTheFinalMap) {
+  SilentProgress progress;
+  Recorder recorder;
+  const Mission m = readMission(mission());
+  const ReconstructionResult r = reconstruct(m, ReconstructionParams{}, progress, &recorder, 5);
+  EXPECT_EQ(recorder.carved.size(), 24u);
+  std::set<std::tuple<float, float, float>> shown, actual;
+  for (const auto& [block, points] : recorder.blocks) {
+    for (const auto& p : points)
+      shown.insert({p.x(), p.y(), p.z()});
+  }
+  r.map->forEachOccupied([&](const Eigen::Vector3i& v, float) {
+    const Eigen::Vector3f c = r.map->voxelCentre(v).cast<float>();
+    actual.insert({c.x(), c.y(), c.z()});
+  });
+  EXPECT_EQ(shown, actual);
+}
+
+TEST_F(Pipeline, ViewerUpdatesFollowTheOcclusionAwareSecondCarving) {
+  SilentProgress progress;
+  Recorder recorder;
+  ReconstructionParams params;
+  params.occlusion_aware_carving = true;
+  const ReconstructionResult r = reconstruct(readMission(mission()), params, progress, &recorder);
+  std::size_t shown = 0;
+  for (const auto& [block, points] : recorder.blocks) {
+    shown += points.size();
+  }
+  EXPECT_EQ(shown, r.map->occupiedCount());
+  EXPECT_GT(r.surface.size(), 500u);
+}
+
+TEST_F(Pipeline, BrokenFramesAreSkippedAndReported) {
+  test::ScratchDir dir;
+  const auto copy = dir.path() / "m";
+  std::filesystem::copy(mission(), copy, std::filesystem::copy_options::recursive);
+  test::writeText(copy / "frames" / "000005.png", "truncated");
+  SilentProgress progress;
+  Recorder recorder;
+  const ReconstructionResult r =
+      reconstruct(readMission(copy), ReconstructionParams{}, progress, &recorder);
+  EXPECT_EQ(r.frames_used, 23u);
+  ASSERT_EQ(r.skipped.size(), 1u);
+  EXPECT_EQ(r.skipped[0].index, 5u);
+  EXPECT_NE(r.skipped[0].message.find("000005.png"), std::string::npos);
+  ASSERT_EQ(recorder.skipped.size(), 1u);
+}
+
+TEST_F(Pipeline, CancellingStopsBetweenFrames) {
+  CancelAfter progress(3);
+  const ReconstructionResult r =
+      reconstruct(readMission(mission()), ReconstructionParams{}, progress);
+  EXPECT_TRUE(r.cancelled);
+  EXPECT_EQ(r.frames_used, 3u);
+}
+
+TEST_F(Pipeline, FrameSelectionAndStride) {
+  const Mission m = readMission(mission());
+  ReconstructionParams p;
+  p.first_frame = 2;
+  p.last_frame = 12;
+  p.stride = 3;
+  EXPECT_EQ(selectedFrames(m, p), (std::vector<std::size_t>{2, 5, 8, 11}));
+}
+
+TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
+  test::ScratchDir dir;
+  ReconstructionParams p;
+  p.engine = "reference";
+  p.carve.voxel_size_m = 0.03;
+  p.carve.intensity_threshold = 12.5;
+  p.carve.region = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -2, 3), Eigen::Vector3d(4, 5, 6));
+  p.stride = 2;
+  p.min_views = 7;
+  test::writeText(dir.path() / "p.yaml", p.toYaml());
+  const ReconstructionParams back =
+      ReconstructionParams::fromYamlFile((dir.path() / "p.yaml").string());
+  EXPECT_EQ(back.engine, "reference");
+  EXPECT_EQ(back.carve.voxel_size_m, 0.03);
+  EXPECT_EQ(back.carve.intensity_threshold, 12.5);
+  EXPECT_NEAR(back.carve.elevation_step_rad, p.carve.elevation_step_rad, 1e-15);
+  ASSERT_TRUE(back.carve.region);
+  EXPECT_TRUE(back.carve.region->isApprox(*p.carve.region));
+  EXPECT_EQ(back.stride, 2u);
+  EXPECT_EQ(back.min_views, 7u);
+  for (const std::string bad :
+       {"voxel_size_m: -1\n", "engine: magic\n", "frames: {stride: 0}\n",
+        "region: {min_m: [0, 0, 0], max_m: [-1, 1, 1]}\n", "range_min_m: 5\nrange_max_m: 4\n"}) {
+    test::writeText(dir.path() / "bad.yaml", bad);
+    EXPECT_THROW(ReconstructionParams::fromYamlFile((dir.path() / "bad.yaml").string()), Error)
+        << bad;
+  }
+}
+
+}  // namespace
+}  // namespace sonarcarve
