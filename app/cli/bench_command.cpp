@@ -4,9 +4,15 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include "carve/carving_geometry.h"
+#include "carve/fast_carver.h"
+#include "carve/reference_carver.h"
 #include "cli/commands.h"
 #include "cli/terminal_progress.h"
 #include "common/thread_pool.h"
+#include "occlusion/occlusion_resolver.h"
+#include "pipeline/reconstruction_params.h"
 #include "sim/demo_scenes.h"
 #include "sim/noise.h"
 #include "sim/ray_caster.h"
@@ -18,6 +24,8 @@ namespace {
 
 struct BenchOptions {
   std::string what = "simulate";
+  bool region = false;
+  int reference_frames = 3;
   std::string scene = "riser";
   int frames = 40;
   bool json = false;
@@ -103,18 +111,151 @@ int benchSimulate(const BenchOptions& o) {
   return 0;
 }
 
+// Peak resident memory of this process so far, from /proc (Linux), in MB.
+double peakMemoryMb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) {
+      return std::stod(line.substr(6)) / 1024.0;
+    }
+  }
+  return 0.0;
+}
+
+Eigen::Isometry3d sonarPose(const Trajectory& trajectory, std::size_t i) {
+  const NavSample& pose = trajectory.poses[i];
+  Eigen::Isometry3d T_world_vehicle = Eigen::Isometry3d::Identity();
+  T_world_vehicle.linear() = pose.q_world_vehicle.toRotationMatrix();
+  T_world_vehicle.translation() = pose.position_m;
+  return T_world_vehicle * trajectory.mounting.T_vehicle_sonar();
+}
+
+// The whole demo mission in memory (no file I/O in the timings): the fast engine's map
+// update and occlusion resolution per frame, then the reference engine on a few frames.
+int benchCarve(const BenchOptions& o) {
+  const Scene scene = makeDemoScene(o.scene);
+  const SonarModel sonar = paperSonar();
+  TrajectorySpec spec;
+  spec.kind = o.scene == "seabed-objects" ? "lawnmower" : "vertical";
+  const Trajectory trajectory = makeTrajectory(spec, scene.target);
+  const RayCaster caster(scene);
+  const SonarSimulator simulator(caster, sonar, ImagingSettings{});
+  CarveParams params;
+  if (o.region) {
+    // A 4 m x 4 m column around the structure's axis, as an analyst would draw it.
+    const Eigen::Vector3d axis = scene.target.axis_point_m;
+    params.region = Eigen::AlignedBox3d(
+        Eigen::Vector3d(axis.x() - 2.0, axis.y() - 2.0, scene.target.top_down_m - 1.0),
+        Eigen::Vector3d(axis.x() + 2.0, axis.y() + 2.0, scene.target.bottom_down_m + 0.5));
+  }
+  const std::size_t frames = trajectory.poses.size();
+  std::vector<cv::Mat> images(frames);
+  std::vector<Eigen::Isometry3d> poses(frames);
+  const CarvingGeometry geometry(sonar, params);
+  Eigen::AlignedBox3d bounds;
+  for (std::size_t i = 0; i < frames; ++i) {
+    poses[i] = sonarPose(trajectory, i);
+    images[i] = simulator.render(poses[i]);
+    bounds.extend(geometry.frustumBounds(poses[i]));
+  }
+  if (params.region) {
+    bounds = bounds.intersection(*params.region);
+  }
+  const double before_map = peakMemoryMb();
+  VoxelMap map(params.voxel_size_m, bounds);
+  FastCarver carver(map, sonar, params);
+  Timings carve;
+  TerminalProgress progress;
+  double visited = 0.0, observed = 0.0;
+  for (std::size_t i = 0; i < frames && !progress.cancelled(); ++i) {
+    IntegrateStats stats;
+    carve.ms.push_back(timeMs(
+        [&] { stats = carver.integrate(images[i], poses[i], static_cast<std::uint32_t>(i + 1)); }));
+    visited += static_cast<double>(stats.blocks_visited) / static_cast<double>(frames);
+    observed += static_cast<double>(stats.voxels_observed) / static_cast<double>(frames);
+    progress.report("bench carve", i + 1, frames);
+  }
+  std::vector<Eigen::Vector3i> occupied;
+  std::vector<float> values;
+  map.forEachOccupiedOnShell([&](const Eigen::Vector3i& v, float value) {
+    occupied.push_back(v);
+    values.push_back(value);
+  });
+  OcclusionResolver resolver(occupied, values, sonar, params);
+  const double occlusion_total = timeMs([&] {
+    ThreadPool::shared().parallelFor(frames, 1, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i)
+        resolver.addView(poses[i]);
+    });
+  });
+  // The reference engine, on a few frames in the middle (it takes seconds per frame).
+  CarveParams reference_params = params;
+  reference_params.region = bounds;
+  ReferenceCarver reference(sonar, reference_params);
+  Timings reference_ms;
+  for (int k = 0; k < o.reference_frames && !progress.cancelled(); ++k) {
+    const std::size_t i = frames / 2 + static_cast<std::size_t>(k);
+    reference_ms.ms.push_back(timeMs([&] { reference.integrate(images[i], poses[i]); }));
+    progress.report("bench reference", static_cast<std::size_t>(k + 1),
+                    static_cast<std::size_t>(o.reference_frames));
+  }
+  progress.finish();
+  nlohmann::json j = {
+      {"bench", "carve"},
+      {"scene", o.scene},
+      {"region_of_interest", o.region},
+      {"frames", carve.ms.size()},
+      {"threads", ThreadPool::shared().size()},
+      {"map_blocks", map.blockCount()},
+      {"fast_carve_median_ms", carve.median()},
+      {"fast_carve_mean_ms", carve.mean()},
+      {"blocks_visited_per_frame", visited},
+      {"voxels_observed_per_frame", observed},
+      {"occlusion_ms_per_frame", occlusion_total / static_cast<double>(frames)},
+      {"surface_points", resolver.result(ReconstructionParams::kDefaultMinViews).size()},
+      {"map_megabytes", static_cast<double>(map.memoryBytes()) / 1e6},
+      {"peak_memory_mb", peakMemoryMb()},
+      {"images_and_scene_mb", before_map},
+      {"reference_carve_median_ms", reference_ms.median()},
+      {"reference_frames", reference_ms.ms.size()}};
+  if (o.json) {
+    std::printf("%s\n", j.dump(2).c_str());
+  } else {
+    std::printf("carve %s%s: %zu frames, 650 x 500 images, 2 cm voxels, %u threads\n",
+                o.scene.c_str(), o.region ? " (4 m region of interest)" : " (whole frustum)",
+                carve.ms.size(), ThreadPool::shared().size());
+    std::printf("  fast map update      median %7.1f ms   mean %.1f ms\n", carve.median(),
+                carve.mean());
+    std::printf("  blocks visited       %7.0f per frame, %.1f M voxels observed\n", visited,
+                observed / 1e6);
+    std::printf("  occlusion resolution %7.2f ms per frame\n",
+                occlusion_total / static_cast<double>(frames));
+    std::printf("  reference map update median %7.0f ms (%zu frames)\n", reference_ms.median(),
+                reference_ms.ms.size());
+    std::printf("  map %.1f MB, peak memory %.0f MB (of which images and scene %.0f MB)\n",
+                static_cast<double>(map.memoryBytes()) / 1e6, peakMemoryMb(), before_map);
+  }
+  return 0;
+}
+
 }  // namespace
 
 void addBenchCommand(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("bench", "Measure the engine's speed at the paper's parameters");
   auto o = std::make_shared<BenchOptions>();
-  cmd->add_option("what", o->what, "simulate")
-      ->check(CLI::IsMember({"simulate"}))
+  cmd->add_option("what", o->what, "simulate | carve")
+      ->check(CLI::IsMember({"simulate", "carve"}))
+      ->capture_default_str();
+  cmd->add_flag("--region", o->region, "carve: map a 4 m column around the structure only");
+  cmd->add_option("--reference-frames", o->reference_frames,
+                  "carve: frames to time the reference engine on")
       ->capture_default_str();
   cmd->add_option("--scene", o->scene, "Demo scene")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Frames to time")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the figures as JSON");
-  cmd->callback([o, &exit_code] { exit_code = benchSimulate(*o); });
+  cmd->callback(
+      [o, &exit_code] { exit_code = o->what == "carve" ? benchCarve(*o) : benchSimulate(*o); });
 }
 
 }  // namespace sonarcarve::cli

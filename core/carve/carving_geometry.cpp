@@ -19,6 +19,16 @@ CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& par
   range_max_sq_ = static_cast<float>(range_max_ * range_max_);
   const double s = std::sin(0.5 * sonar.verticalAperture());
   sin_half_aperture_sq_ = static_cast<float>(s * s);
+  sin_half_aperture_ = s;
+  cos_half_aperture_ = std::cos(0.5 * sonar.verticalAperture());
+  if (sonar.bearings().fieldOfView() >= std::numbers::pi) {
+    throw Error("carving", "field of view",
+                "fields of view of 180 degrees or more are not supported");
+  }
+  const double left = sonar.bearings().leftEdge();
+  const double right = sonar.bearings().rightEdge();
+  left_normal_ = Eigen::Vector3d(-std::sin(left), std::cos(left), 0.0);
+  right_normal_ = Eigen::Vector3d(std::sin(right), -std::cos(right), 0.0);
 
   const BearingTable& b = sonar.bearings();
   double narrowest = b.fieldOfView();
@@ -61,21 +71,26 @@ Eigen::AlignedBox3d CarvingGeometry::frustumBounds(const Eigen::Isometry3d& T_wo
 }
 
 bool CarvingGeometry::sphereMayTouchFrustum(const Eigen::Vector3d& c, double radius) const {
-  const double d = c.norm();
-  if (d - radius > range_max_ || d + radius < range_min_) {
+  // Signed distances to the frustum's bounding surfaces, without trigonometry: this runs for
+  // every block of a frame's bounding box.
+  const double d2 = c.squaredNorm();
+  if (d2 > (range_max_ + radius) * (range_max_ + radius)) {
+    return false;
+  }
+  const double d = std::sqrt(d2);
+  if (d + radius < range_min_) {
     return false;
   }
   if (d <= radius) {
     return true;
   }
-  const double margin = std::asin(radius / d);
-  const double bearing = std::atan2(c.y(), c.x());
-  if (bearing + margin < sonar_.bearings().leftEdge() ||
-      bearing - margin > sonar_.bearings().rightEdge()) {
+  // Bearing wedge [left, right] (narrower than 180 degrees): inside both boundary planes.
+  if (left_normal_.dot(c) < -radius || right_normal_.dot(c) < -radius) {
     return false;
   }
-  const double elevation = std::asin(std::clamp(-c.z() / d, -1.0, 1.0));
-  return std::abs(elevation) - margin <= 0.5 * sonar_.verticalAperture();
+  // Elevation: distance to the aperture's cone |theta| = aperture / 2.
+  const double horizontal = std::hypot(c.x(), c.y());
+  return std::abs(c.z()) * cos_half_aperture_ - horizontal * sin_half_aperture_ <= radius;
 }
 
 }  // namespace sonarcarve

@@ -45,6 +45,10 @@ class CarvingGeometry {
   float range_min_sq_;
   float range_max_sq_;
   float sin_half_aperture_sq_;
+  double sin_half_aperture_;
+  double cos_half_aperture_;
+  Eigen::Vector3d left_normal_;  // inward normals of the bearing wedge's boundary planes
+  Eigen::Vector3d right_normal_;
   std::vector<std::int16_t> lut_;
   float lut_left_;
   float lut_inv_step_;

@@ -53,6 +53,9 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
       Eigen::Vector3f p = p0 + static_cast<float>(y) * dy + static_cast<float>(z) * dz;
       float* v = values + (z * kSide + y) * kSide;
       for (int x = 0; x < kSide; ++x, p += dx) {
+        if (v[x] == 0.0f) {
+          continue;  // carved: no view can change it, so skip the projection
+        }
         const float r2 = p.squaredNorm();
         if (r2 < rmin2 || r2 >= rmax2 || p.z() * p.z() > r2 * sin2) {
           continue;

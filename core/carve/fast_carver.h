@@ -31,7 +31,7 @@ struct VisibilityLimit {
 struct IntegrateStats {
   std::size_t blocks_visited = 0;  ///< blocks of the frustum's box that were not yet free
   std::size_t blocks_changed = 0;
-  std::size_t voxels_observed = 0;
+  std::size_t voxels_observed = 0;  ///< not yet carved voxels inside the frustum
 };
 
 class FastCarver {
