@@ -1,34 +1,45 @@
 #include "carve/occupancy_export.h"
 
 #include <octomap/OcTree.h>
-#include <algorithm>
+#include <unordered_set>
 
 #include "common/error.h"
 #include "io/atomic_file.h"
 
 namespace sonarcarve {
+namespace {
+
+octomap::OcTreeKey keyOf(const Eigen::Vector3i& voxel) {
+  return {static_cast<octomap::key_type>(voxel.x() + 32768),
+          static_cast<octomap::key_type>(voxel.y() + 32768),
+          static_cast<octomap::key_type>(voxel.z() + 32768)};
+}
+
+}  // namespace
 
 void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path) {
   octomap::OcTree tree(map.voxelSize());
-  for (std::size_t b = 0; b < map.blockCount(); ++b) {
+  // Occupied voxels on the shell of occupied space; the blocks holding them.
+  std::unordered_set<std::size_t> shell_blocks;
+  const double block = map.blockSize();
+  map.forEachOccupiedOnShell([&](const Eigen::Vector3i& voxel, float) {
+    tree.updateNode(keyOf(voxel), true, true);
+    const Eigen::Vector3i rel =
+        (map.voxelCentre(voxel) / block).array().floor().cast<int>().matrix() - map.firstBlock();
+    shell_blocks.insert(map.blockIndex(rel));
+  });
+  // The carved voxels around them: the free space next to the structure.
+  for (const std::size_t b : shell_blocks) {
     const float* v = map.values(b);
-    if (v == nullptr || std::none_of(v, v + VoxelMap::kBlockVoxels,
-                                     [](float x) { return x > 0.0f && x < VoxelMap::kUnknown; })) {
-      continue;
-    }
     const Eigen::Vector3i base = (map.blockCoords(b) + map.firstBlock()) * VoxelMap::kBlockSide;
     for (int i = 0; i < VoxelMap::kBlockVoxels; ++i) {
-      if (v[i] == VoxelMap::kUnknown) {
-        continue;
+      if (v[i] == 0.0f) {
+        tree.updateNode(
+            keyOf(base + Eigen::Vector3i(i % VoxelMap::kBlockSide,
+                                         (i / VoxelMap::kBlockSide) % VoxelMap::kBlockSide,
+                                         i / (VoxelMap::kBlockSide * VoxelMap::kBlockSide))),
+            false, true);
       }
-      const Eigen::Vector3i voxel =
-          base + Eigen::Vector3i(i % VoxelMap::kBlockSide,
-                                 (i / VoxelMap::kBlockSide) % VoxelMap::kBlockSide,
-                                 i / (VoxelMap::kBlockSide * VoxelMap::kBlockSide));
-      const octomap::OcTreeKey key(static_cast<octomap::key_type>(voxel.x() + 32768),
-                                   static_cast<octomap::key_type>(voxel.y() + 32768),
-                                   static_cast<octomap::key_type>(voxel.z() + 32768));
-      tree.updateNode(key, v[i] > 0.0f, true);
     }
   }
   tree.updateInnerOccupancy();

@@ -1,8 +1,10 @@
 // Exporting a carved map as a standard OctoMap occupancy tree (.bt), which OctoMap's own tools
-// (octovis) open. Occupied voxels are written as occupied, and the carved voxels of the blocks
-// (8^3 voxels) that hold occupied ones as free: the free space around the structure. The rest
-// of the carved water is left out (tens of millions of voxels, gigabytes as octree nodes):
-// a viewer shows it as unknown.
+// (octovis) open. Occupied voxels on the shell of occupied space (with a face neighbour that
+// is not occupied) are written as occupied, and the carved voxels of the blocks (8^3 voxels)
+// holding them as free: the structure and the water around it. Left out, and so unknown to a
+// viewer: the rest of the carved water, and occupied voxels buried inside occupied space
+// (under a seabed no view could carve, tens of millions of voxels): as octree nodes they
+// would take gigabytes.
 #pragma once
 
 #include <filesystem>
