@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what SonarCarve needs, builds it and runs the main job on the bundled demo:
-# simulate the riser inspection, reconstruct it in 3D, evaluate it against the ground truth
-# and draw one of its frames. (Noise-free for now: denoising comes with the detector work.)
+# simulate the riser inspection (with realistic noise) and a run in empty water, learn the
+# noise model, reconstruct the riser in 3D, evaluate it against the ground truth and draw
+# one of its frames before and after denoising.
 set -euo pipefail
 cd "$(dirname "$0")"
 ./packaging/install-deps.sh
@@ -9,14 +10,18 @@ cmake --preset release
 cmake --build --preset release --parallel "$(nproc)"
 cli=./build/release/app/sonarcarve-cli
 out=out/riser-demo
-$cli simulate --scene riser --noise none --out "$out/mission" --force
+$cli simulate --scene riser --out "$out/mission" --force
+$cli simulate --scene riser --empty-water --seed 99 --out "$out/empty-water" --force
+$cli noise-model "$out/empty-water" --out "$out/noise.yaml"
 $cli info "$out/mission"
-$cli frame "$out/mission" --index 60 --polar "$out/frame60_polar.png" --fan "$out/frame60_fan.png"
-$cli reconstruct "$out/mission" --out "$out/reconstruction"
+$cli frame "$out/mission" --index 60 --polar "$out/frame60_polar.png" --fan "$out/frame60_fan.png" \
+  --noise-model "$out/noise.yaml" --detected "$out/frame60_denoised.png"
+$cli reconstruct "$out/mission" --noise-model "$out/noise.yaml" --out "$out/reconstruction"
 echo
 echo "Demo done. In $out:"
 echo "  mission/                       the simulated mission (frames, navigation, ground truth)"
-echo "  frame60_fan.png                one sonar frame drawn as its fan"
+echo "  noise.yaml                     the noise model learned from empty-water frames"
+echo "  frame60_fan.png                one sonar frame drawn as its fan (and _polar, _denoised)"
 echo "  reconstruction/surface_points.ply   the 3D surface (x, y, z, intensity, views)"
 echo "  reconstruction/map.bt          the carved map (open with octovis)"
 echo "  reconstruction/report.json     timings and accuracy against the ground truth"

@@ -12,5 +12,6 @@ void addBenchCommand(CLI::App& app, int& exit_code);
 void addFrameCommand(CLI::App& app, int& exit_code);
 void addReconstructCommand(CLI::App& app, int& exit_code);
 void addEvaluateCommand(CLI::App& app, int& exit_code);
+void addNoiseModelCommand(CLI::App& app, int& exit_code);
 
 }  // namespace sonarcarve::cli

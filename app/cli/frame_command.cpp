@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
+#include "denoise/detector.h"
 #include "io/atomic_file.h"
 #include "io/mission.h"
 #include "sonar/fan_image.h"
@@ -24,7 +25,9 @@ void writePng(const cv::Mat& picture, const std::string& path) {
 void addFrameCommand(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("frame", "Draw one frame of a mission as PNG pictures");
   struct Options {
-    std::string mission, polar, fan;
+    std::string mission, polar, fan, noise_model, detected;
+    int smoothing = DetectorParams::kDefaultSmoothing;
+    double z = DetectorParams::kDefaultZ;
     std::size_t index = 0;
     float low = -1.0f, high = -1.0f;
   };
@@ -33,6 +36,12 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--index", o->index, "Frame index (0-based)")->capture_default_str();
   cmd->add_option("--polar", o->polar, "Write the polar image here (PNG)");
   cmd->add_option("--fan", o->fan, "Write the fan in true geometry here (PNG)");
+  cmd->add_option("--noise-model", o->noise_model, "Noise model for --detected");
+  cmd->add_option("--detected", o->detected,
+                  "Write the polar image after the Z-test (PNG, same intensity window)");
+  cmd->add_option("--z", o->z, "Z-test threshold for --detected")->capture_default_str();
+  cmd->add_option("--smoothing", o->smoothing, "Detector's box filter for --detected")
+      ->capture_default_str();
   cmd->add_option("--low", o->low, "Intensity shown black (default: 1st percentile)");
   cmd->add_option("--high", o->high, "Intensity shown white (default: 99.5th percentile)");
   cmd->callback([o, &exit_code] {
@@ -54,6 +63,16 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
     }
     if (!o->fan.empty()) {
       writePng(fanPicture(frame.image, mission.sonar, window), o->fan);
+    }
+    if (!o->detected.empty()) {
+      DetectorParams params;
+      params.mode = "ztest";
+      params.z = o->z;
+      params.smoothing = o->smoothing;
+      const Detector detector(params,
+                              std::make_shared<const NoiseModel>(NoiseModel::load(o->noise_model)),
+                              mission.sonar);
+      writePng(polarPicture(detector.apply(frame.image), window), o->detected);
     }
     std::cout << "frame " << o->index << " at t = " << frame.time_s << " s, intensity window "
               << window.low << " .. " << window.high << "\n";

@@ -30,6 +30,11 @@ struct ReconstructOptions {
   double elevation_step_deg = -1.0;
   int stride = -1;
   int min_views = -1;
+  std::string noise_model;
+  std::string detector;
+  double z = -1.0;
+  double cfar_pfa = -1.0;
+  int smoothing = -1;
   std::vector<double> region;
 };
 
@@ -48,6 +53,21 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
   }
   if (o.elevation_step_deg > 0.0) {
     p.carve.elevation_step_rad = degToRad(o.elevation_step_deg);
+  }
+  if (!o.noise_model.empty()) {
+    p.noise_model = o.noise_model;
+  }
+  if (!o.detector.empty()) {
+    p.detector.mode = o.detector;
+  }
+  if (o.z > 0.0) {
+    p.detector.z = o.z;
+  }
+  if (o.smoothing > 0) {
+    p.detector.smoothing = o.smoothing;
+  }
+  if (o.cfar_pfa > 0.0) {
+    p.detector.cfar_pfa = o.cfar_pfa;
   }
   if (o.min_views > 0) {
     p.min_views = static_cast<std::uint32_t>(o.min_views);
@@ -83,6 +103,9 @@ int runReconstruct(const ReconstructOptions& o) {
 
   nlohmann::json report = {{"mission", mission.folder.string()},
                            {"engine", params.engine},
+                           {"detector", params.detector.resolved(!params.noise_model.empty()).mode},
+                           {"smoothing", params.detector.smoothing},
+                           {"z", params.detector.z},
                            {"frames_used", result.frames_used},
                            {"frames_skipped", result.skipped.size()},
                            {"cancelled", result.cancelled},
@@ -125,6 +148,14 @@ void addReconstructCommand(CLI::App& app, int& exit_code) {
                   "Intensity at or below which a pixel is empty water");
   cmd->add_option("--elevation-step", o->elevation_step_deg, "Elevation step, deg (default 0.2)");
   cmd->add_option("--stride", o->stride, "Use every n-th frame");
+  cmd->add_option("--noise-model", o->noise_model,
+                  "Noise model (sonarcarve-cli noise-model --smoothing 3)");
+  cmd->add_option("--detector", o->detector,
+                  "auto (ztest with a noise model, else none) | none | ztest | cfar | probability");
+  cmd->add_option("--z", o->z, "Z-test threshold in standard deviations (default 2)");
+  cmd->add_option("--cfar-pfa", o->cfar_pfa, "CFAR false-alarm probability (default 0.05)");
+  cmd->add_option("--smoothing", o->smoothing,
+                  "Detector's box filter side (odd, default 3, 1 = none)");
   cmd->add_option("--min-views", o->min_views,
                   "Keep surface voxels that are the first return in at least this many views");
   cmd->add_option("--region", o->region, "Region of interest: N0 E0 D0 N1 E1 D1 (m)")->expected(6);

@@ -37,16 +37,19 @@ bool TerminalProgress::cancelled() const {
 void TerminalProgress::report(const std::string& stage, std::size_t done, std::size_t total) {
   std::lock_guard lock(mutex_);
   const auto now = std::chrono::steady_clock::now();
-  if (done < total && now - last_draw_ < std::chrono::milliseconds(100)) {
+  // A terminal gets one line redrawn ten times a second; a log file a line every 5 s.
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  if (done < total && now - last_draw_ < std::chrono::milliseconds(tty ? 100 : 5000)) {
     return;
   }
   last_draw_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double left = done > 0 ? elapsed * static_cast<double>(total - done) / done : 0.0;
-  std::fprintf(stderr, "\r%s: %zu/%zu (%3.0f%%)  %.1f s elapsed, %.1f s left   ", stage.c_str(),
-               done, total, total > 0 ? 100.0 * done / total : 100.0, elapsed, left);
+  std::fprintf(stderr, "%s%s: %zu/%zu (%3.0f%%)  %.1f s elapsed, %.1f s left   %s", tty ? "\r" : "",
+               stage.c_str(), done, total, total > 0 ? 100.0 * done / total : 100.0, elapsed, left,
+               tty ? "" : "\n");
   std::fflush(stderr);
-  drawn_ = true;
+  drawn_ = tty;
 }
 
 void TerminalProgress::finish() {

@@ -25,7 +25,15 @@ struct FrameView {
   float half_aperture = 0.0f;
   float inv_elevation_step = 0.0f;
   float margin = 0.0f;
+  // Log-odds fusion of detection probabilities instead of the minimum.
+  bool log_odds = false;
+  float arc_prior = 0.0f;
+  float carve_log_odds = 0.0f;
 };
+
+// Evidence is capped so that a voxel seen lit many times can still be carved by many dark
+// views (the log-odds of p = 0.9999 is 9.2 per view).
+constexpr float kLogOddsCap = 20.0f;
 
 // asin for the small angles of a vertical aperture: 1e-6 rad up to 15 degrees.
 inline float smallAsin(float s) {
@@ -79,7 +87,21 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
         }
         ++observed;
         const float intensity = f.pixels[row * f.cols + beam];
-        if (intensity < v[x]) {
+        if (f.log_odds) {
+          const float prob = std::clamp(intensity, 1e-4f, 1.0f - 1e-4f);
+          const float evidence = std::log(prob / (1.0f - prob)) - f.arc_prior;
+          float fused = v[x] == VoxelMap::kUnknown ? evidence : v[x] + evidence;
+          fused = std::min(fused, kLogOddsCap);
+          if (fused < f.carve_log_odds) {
+            fused = 0.0f;  // carved for good
+          } else if (fused == 0.0f) {
+            fused = -1e-6f;  // observed, not occupied, not carved
+          }
+          if (fused != v[x]) {
+            v[x] = fused;
+            changed = true;
+          }
+        } else if (intensity < v[x]) {
           v[x] = intensity;
           changed = true;
         }
@@ -113,6 +135,9 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   const Eigen::Isometry3d T_sonar_world = T_world_sonar.inverse();
   FrameView frame{pixels.ptr<float>(0), pixels.cols, pixels.rows,
                   T_sonar_world.linear().cast<float>(), T_sonar_world.translation().cast<float>()};
+  frame.log_odds = params_.fusion == CarveParams::Fusion::LogOdds;
+  frame.arc_prior = static_cast<float>(params_.arc_prior);
+  frame.carve_log_odds = static_cast<float>(params_.carve_log_odds);
   if (visibility.first_return_m != nullptr) {
     frame.first_return = visibility.first_return_m->data();
     frame.elevation_bins = visibility.elevation_bins;

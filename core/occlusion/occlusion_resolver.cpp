@@ -43,23 +43,19 @@ OcclusionResolver::OcclusionResolver(const std::vector<Eigen::Vector3i>& voxels,
   }
   block_begin_.push_back(static_cast<std::uint32_t>(centres_.size()));
   views_ = std::make_unique<std::atomic<std::uint32_t>[]>(centres_.size());
+  observed_ = std::make_unique<std::atomic<std::uint32_t>[]>(centres_.size());
 }
 
-std::vector<OcclusionResolver::Cell> OcclusionResolver::zBuffer(
-    const Eigen::Isometry3d& T_world_sonar) const {
+template <typename F>
+void OcclusionResolver::forEachVoxelInView(const Eigen::Isometry3d& T_world_sonar, F&& f) const {
   const SonarModel& sonar = geometry_.sonar();
-  const int beams = sonar.cols();
-  const int bins = elevation_bins_;
-  std::vector<Cell> zbuffer(static_cast<std::size_t>(beams * bins));
   const Eigen::Isometry3d T_sonar_world = T_world_sonar.inverse();
   const Eigen::Matrix3f R = T_sonar_world.linear().cast<float>();
   const Eigen::Vector3f t = T_sonar_world.translation().cast<float>();
   const float half_aperture = static_cast<float>(0.5 * sonar.verticalAperture());
-  const float inv_step = static_cast<float>(1.0 / elevation_step_);
   const float voxel_radius = static_cast<float>(0.5 * std::sqrt(3.0) * voxel_size_m_);
   const float rmin = static_cast<float>(geometry_.rangeMin());
   const float rmax = static_cast<float>(geometry_.rangeMax());
-
   for (std::size_t g = 0; g + 1 < block_begin_.size(); ++g) {
     if (!geometry_.sphereMayTouchFrustum((R * block_centres_[g] + t).cast<double>(),
                                          block_radius_)) {
@@ -71,34 +67,61 @@ std::vector<OcclusionResolver::Cell> OcclusionResolver::zBuffer(
       if (r < rmin || r >= rmax || r <= voxel_radius) {
         continue;
       }
-      const float bearing = fastAtan2(p.y(), p.x());
       const float elevation = std::asin(std::clamp(-p.z() / r, -1.0f, 1.0f));
-      // Angular footprint of the voxel: its half-diagonal seen from the sonar.
       const float spread = std::asin(voxel_radius / r);
       if (std::abs(elevation) - spread > half_aperture) {
         continue;
       }
-      int beam_lo = geometry_.beamOf(bearing - spread);
-      int beam_hi = geometry_.beamOf(bearing + spread);
-      if (beam_lo < 0 && beam_hi < 0) {
-        continue;
-      }
-      beam_lo = beam_lo < 0 ? 0 : beam_lo;
-      beam_hi = beam_hi < 0 ? beams - 1 : beam_hi;
-      const int e_lo =
-          std::max(0, static_cast<int>((elevation - spread + half_aperture) * inv_step));
-      const int e_hi =
-          std::min(bins - 1, static_cast<int>((elevation + spread + half_aperture) * inv_step));
-      for (int j = beam_lo; j <= beam_hi; ++j) {
-        Cell* row = &zbuffer[static_cast<std::size_t>(j * bins)];
-        for (int e = e_lo; e <= e_hi; ++e) {
-          if (row[e].voxel < 0 || r < row[e].range) {
-            row[e] = {r, static_cast<std::int32_t>(i)};
-          }
+      f(i, r, fastAtan2(p.y(), p.x()), elevation, spread);
+    }
+  }
+}
+
+void OcclusionResolver::countObservations(const Eigen::Isometry3d& T_world_sonar) {
+  forEachVoxelInView(T_world_sonar, [&](std::uint32_t i, float, float bearing, float, float) {
+    if (geometry_.beamOf(bearing) >= 0) {
+      observed_[i].fetch_add(1, std::memory_order_relaxed);
+    }
+  });
+}
+
+void OcclusionResolver::requireObservations(std::uint32_t views) {
+  required_observations_ = views;
+}
+
+std::vector<OcclusionResolver::Cell> OcclusionResolver::zBuffer(
+    const Eigen::Isometry3d& T_world_sonar) const {
+  const int beams = geometry_.sonar().cols();
+  const int bins = elevation_bins_;
+  std::vector<Cell> zbuffer(static_cast<std::size_t>(beams * bins));
+  const float half_aperture = static_cast<float>(0.5 * geometry_.sonar().verticalAperture());
+  const float inv_step = static_cast<float>(1.0 / elevation_step_);
+  forEachVoxelInView(T_world_sonar, [&](std::uint32_t i, float r, float bearing, float elevation,
+                                        float spread) {
+    if (required_observations_ > 0 &&
+        observed_[i].load(std::memory_order_relaxed) < required_observations_) {
+      return;
+    }
+    // Splat the voxel's angular footprint over the cells it covers; the nearest wins.
+    int beam_lo = geometry_.beamOf(bearing - spread);
+    int beam_hi = geometry_.beamOf(bearing + spread);
+    if (beam_lo < 0 && beam_hi < 0) {
+      return;
+    }
+    beam_lo = beam_lo < 0 ? 0 : beam_lo;
+    beam_hi = beam_hi < 0 ? beams - 1 : beam_hi;
+    const int e_lo = std::max(0, static_cast<int>((elevation - spread + half_aperture) * inv_step));
+    const int e_hi =
+        std::min(bins - 1, static_cast<int>((elevation + spread + half_aperture) * inv_step));
+    for (int j = beam_lo; j <= beam_hi; ++j) {
+      Cell* row = &zbuffer[static_cast<std::size_t>(j * bins)];
+      for (int e = e_lo; e <= e_hi; ++e) {
+        if (row[e].voxel < 0 || r < row[e].range) {
+          row[e] = {r, static_cast<std::int32_t>(i)};
         }
       }
     }
-  }
+  });
   return zbuffer;
 }
 

@@ -25,6 +25,13 @@ class OcclusionResolver {
   OcclusionResolver(const std::vector<Eigen::Vector3i>& voxels, const std::vector<float>& values,
                     const SonarModel& sonar, const CarveParams& params);
 
+  /// Counts the voxels inside the frustum of one pose. Thread safe. Call it for every view
+  /// before addView when using requireObservations().
+  void countObservations(const Eigen::Isometry3d& T_world_sonar);
+  /// From now on only voxels inside at least `views` frustums take part in the z-buffers.
+  /// Noise that survives carving lies where few views overlap (near the sonar); without
+  /// this it would hide the structure behind it. Not thread safe.
+  void requireObservations(std::uint32_t views);
   /// Finds the first returns seen from one pose. Thread safe: call from several threads.
   void addView(const Eigen::Isometry3d& T_world_sonar);
   /// Range of the first occupied voxel in each (beam, elevation bin) cell seen from a pose,
@@ -52,6 +59,11 @@ class OcclusionResolver {
   std::vector<std::uint32_t> block_begin_;  // voxels of group g: [begin[g], begin[g + 1])
   double block_radius_;
   std::unique_ptr<std::atomic<std::uint32_t>[]> views_;
+  std::unique_ptr<std::atomic<std::uint32_t>[]> observed_;
+  std::uint32_t required_observations_ = 0;
+  // Calls f(voxel index, range, bearing, elevation, angular radius) for each voxel in view.
+  template <typename F>
+  void forEachVoxelInView(const Eigen::Isometry3d& T_world_sonar, F&& f) const;
 };
 
 }  // namespace sonarcarve

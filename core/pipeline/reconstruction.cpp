@@ -113,6 +113,21 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   }
   CarveParams carve = params.carve;
   carve.region = bounds;
+  // Noise removal before carving; detection probabilities are fused as log-odds.
+  std::shared_ptr<const NoiseModel> noise_model;
+  if (!params.noise_model.empty()) {
+    noise_model = std::make_shared<const NoiseModel>(NoiseModel::load(params.noise_model));
+  }
+  const Detector detector(params.detector, noise_model, mission.sonar);
+  if (detector.params().mode == "probability") {
+    carve.fusion = CarveParams::Fusion::LogOdds;
+    carve.intensity_threshold = 0.0;
+  }
+  const auto loadDetected = [&](std::size_t index) {
+    Frame frame = loadFrame(mission, index);
+    frame.image = detector.apply(frame.image);
+    return frame;
+  };
 
   std::vector<Eigen::Vector3i> occupied;
   std::vector<float> values;
@@ -135,7 +150,7 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
     const PosedFrame& f = posed[n];
     Frame frame;
     try {
-      frame = loadFrame(mission, f.index);
+      frame = loadDetected(f.index);
     } catch (const Error& e) {
       skip(f.index, e.what());
       continue;
@@ -201,8 +216,8 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
     for (std::size_t n = 0; n < used.size() && !progress.cancelled(); ++n) {
       Frame frame;
       try {
-        frame = loadFrame(mission, used[n].index);
-      } catch (const Error& e) {
+        frame = loadDetected(used[n].index);
+      } catch (const Error&) {
         continue;  // it loaded in the first pass; a file changed under us is skipped again
       }
       const std::vector<float> first = first_surface.firstReturnRanges(used[n].T_world_sonar);
@@ -227,6 +242,12 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   // Occlusion resolution: frames in parallel, cancellable between frames.
   const auto t_occlusion = Clock::now();
   OcclusionResolver resolver(occupied, values, mission.sonar, carve);
+  ThreadPool::shared().parallelFor(used.size(), 4, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      resolver.countObservations(used[i].T_world_sonar);
+    }
+  });
+  resolver.requireObservations(params.min_views);
   std::atomic<std::size_t> resolved{0};
   ThreadPool::shared().parallelFor(used.size(), 1, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e && !progress.cancelled(); ++i) {

@@ -1,5 +1,6 @@
 #include "pipeline/reconstruction_params.h"
 
+#include <filesystem>
 #include <sstream>
 
 #include "common/error.h"
@@ -60,6 +61,39 @@ ReconstructionParams ReconstructionParams::fromYamlFile(const std::string& path)
     }
     p.occlusion_aware_carving = value;
   }
+  if (const YAML::Node d = root["detector"]) {
+    if (d["mode"]) {
+      p.detector.mode = f.text(d["mode"], "detector.mode");
+    }
+    if (d["z"]) {
+      p.detector.z = f.number(d["z"], "detector.z");
+    }
+    if (d["cfar_guard"]) {
+      p.detector.cfar_guard = static_cast<int>(f.number(d["cfar_guard"], "detector.cfar_guard"));
+    }
+    if (d["cfar_train"]) {
+      p.detector.cfar_train = f.positiveInt(d["cfar_train"], "detector.cfar_train");
+    }
+    if (d["cfar_pfa"]) {
+      p.detector.cfar_pfa = f.positive(d["cfar_pfa"], "detector.cfar_pfa");
+    }
+    if (d["smoothing"]) {
+      p.detector.smoothing = f.positiveInt(d["smoothing"], "detector.smoothing");
+    }
+    if (d["arc_prior"]) {
+      p.carve.arc_prior = f.number(d["arc_prior"], "detector.arc_prior");
+    }
+    if (d["carve_log_odds"]) {
+      p.carve.carve_log_odds = f.number(d["carve_log_odds"], "detector.carve_log_odds");
+    }
+  }
+  if (root["noise_model"]) {
+    std::filesystem::path model = f.text(root["noise_model"], "noise_model");
+    if (model.is_relative()) {
+      model = std::filesystem::path(path).parent_path() / model;
+    }
+    p.noise_model = model.string();
+  }
   if (root["min_views"]) {
     p.min_views = static_cast<std::uint32_t>(f.positiveInt(root["min_views"], "min_views"));
   }
@@ -84,6 +118,11 @@ void ReconstructionParams::validate() const {
   if (carve.range_min_m < 0.0 || carve.range_max_m < 0.0 ||
       (carve.range_max_m > 0.0 && carve.range_max_m <= carve.range_min_m)) {
     throw Error("parameters", "range_min_m/range_max_m", "expected 0 <= min < max (0 = sonar's)");
+  }
+  detector.validate();
+  if (detector.needsNoiseModel() && noise_model.empty()) {
+    throw Error("parameters", "noise_model",
+                "the " + detector.mode + " detector needs a noise model file");
   }
   if (stride < 1) {
     throw Error("parameters", "frames.stride", "expected a stride of at least 1");
@@ -111,7 +150,16 @@ std::string ReconstructionParams::toYaml() const {
   out << "frames: {first: " << first_frame << ", last: " << last_frame << ", stride: " << stride
       << "}\n"
       << "min_views: " << min_views << "\n"
-      << "occlusion_aware_carving: " << (occlusion_aware_carving ? "true" : "false") << "\n";
+      << "occlusion_aware_carving: " << (occlusion_aware_carving ? "true" : "false") << "\n"
+      << "detector: {mode: " << detector.mode << ", z: " << shortestNumber(detector.z)
+      << ", cfar_guard: " << detector.cfar_guard << ", cfar_train: " << detector.cfar_train
+      << ", cfar_pfa: " << shortestNumber(detector.cfar_pfa)
+      << ", arc_prior: " << shortestNumber(carve.arc_prior)
+      << ", carve_log_odds: " << shortestNumber(carve.carve_log_odds)
+      << ", smoothing: " << detector.smoothing << "}\n";
+  if (!noise_model.empty()) {
+    out << "noise_model: " << std::filesystem::absolute(noise_model).string() << "\n";
+  }
   return out.str();
 }
 

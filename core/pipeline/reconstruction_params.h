@@ -6,18 +6,25 @@
 //   region: {min_m: [n, e, d], max_m: [n, e, d]}     (optional)
 //   frames: {first: 0, last: -1, stride: 1}          (last -1 = to the end)
 //   min_views, occlusion_aware_carving
+//   detector: {mode: none|ztest|cfar|probability, z, cfar_guard, cfar_train, cfar_pfa,
+//              arc_prior, carve_log_odds, smoothing}
+//   noise_model: PATH                                (relative to the YAML file's folder)
 #pragma once
 
 #include <cstdint>
 #include <string>
 
 #include "carve/carve_params.h"
+#include "denoise/detector.h"
 
 namespace sonarcarve {
 
 struct ReconstructionParams {
   std::string engine = "fast";
   CarveParams carve;
+  DetectorParams detector;
+  /// Noise model file for the ztest and probability detectors ("" = none).
+  std::string noise_model;
   std::size_t first_frame = 0;
   long last_frame = -1;  ///< exclusive; -1 means to the end
   std::size_t stride = 1;

@@ -17,7 +17,7 @@ namespace sonarcarve {
 
 struct NoiseSpec {
   bool enabled = true;
-  double background_mean = 600.0;   ///< mean background amplitude at far range, centre beam
+  double background_mean = 150.0;   ///< mean background amplitude at far range, centre beam
   double near_range_boost = 2.0;    ///< extra background at zero range, as a factor
   double near_range_scale_m = 1.5;  ///< e-folding range of the near-range boost
   double edge_boost = 0.6;          ///< extra background at the edge of the fan, as a factor

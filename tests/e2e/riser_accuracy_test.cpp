@@ -59,5 +59,28 @@ TEST(RiserAccuracy, NoiseFreeRiserIsReconstructedWithinTheVoxelSize) {
   }
 }
 
+TEST(RiserAccuracy, NoisyRiserWithTheDefaultDetectorKeepsItsAccuracy) {
+  test::ScratchDir dir;
+  const auto mission = dir.path() / "riser";
+  const auto empty = dir.path() / "empty";
+  const auto noise = dir.path() / "noise.yaml";
+  ASSERT_EQ(runCli("simulate --scene riser --out " + quoted(mission)).exit_code, 0);
+  ASSERT_EQ(
+      runCli("simulate --scene riser --empty-water --seed 99 --out " + quoted(empty)).exit_code, 0);
+  const auto model = runCli("noise-model " + quoted(empty) + " --out " + quoted(noise));
+  ASSERT_EQ(model.exit_code, 0) << model.output;
+  const auto out = dir.path() / "reconstruction";
+  const auto rec = runCli("reconstruct " + quoted(mission) + " --noise-model " + quoted(noise) +
+                          " --out " + quoted(out));
+  ASSERT_EQ(rec.exit_code, 0) << rec.output;
+  std::ifstream in(out / "report.json");
+  const auto report = nlohmann::json::parse(in);
+  EXPECT_EQ(report.at("detector"), "ztest");
+  const auto& e = report.at("evaluation");
+  EXPECT_GE(e.at("fscore").get<double>(), 0.85) << e.dump(2);
+  EXPECT_LE(e.at("accuracy_median_m").get<double>(), 0.02) << e.dump(2);
+  EXPECT_LE(e.at("accuracy_p90_m").get<double>(), 0.05) << e.dump(2);
+}
+
 }  // namespace
 }  // namespace sonarcarve

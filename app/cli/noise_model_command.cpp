@@ -1,0 +1,44 @@
+// `sonarcarve-cli noise-model EMPTY_WATER_MISSION --out noise.yaml`: per-pixel statistics of
+// empty-water frames, for the ztest and probability detectors.
+#include <iostream>
+
+#include "cli/commands.h"
+#include "cli/terminal_progress.h"
+#include "denoise/detector.h"
+#include "denoise/noise_model.h"
+#include "io/mission.h"
+
+namespace sonarcarve::cli {
+
+void addNoiseModelCommand(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("noise-model", "Learn a noise model from empty-water frames");
+  struct Options {
+    std::string mission, out;
+    int smoothing = DetectorParams::kDefaultSmoothing;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("mission", o->mission, "Mission of empty water (the same sonar, no target)")
+      ->required();
+  cmd->add_option("--out", o->out, "Noise model file to write (YAML)")->required();
+  cmd->add_option("--smoothing", o->smoothing,
+                  "Box filter side applied to frames first (odd; match the detector's)")
+      ->capture_default_str();
+  cmd->callback([o, &exit_code] {
+    const Mission mission = readMission(o->mission);
+    TerminalProgress progress;
+    std::vector<FrameProblem> skipped;
+    const NoiseModel model = NoiseModel::learn(mission, progress, &skipped, o->smoothing);
+    progress.finish();
+    for (const auto& p : skipped) {
+      std::cerr << "skipped: " << p.message << "\n";
+    }
+    model.save(o->out);
+    std::cout << "noise model of " << model.frames() << " frames (" << model.mean().cols
+              << " beams x " << model.mean().rows << " bins): mean background "
+              << cv::mean(model.mean())[0] << ", stddev " << cv::mean(model.stddev())[0]
+              << "; written to " << o->out << "\n";
+    exit_code = 0;
+  });
+}
+
+}  // namespace sonarcarve::cli

@@ -1,0 +1,138 @@
+#include "denoise/detector.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+
+DetectorParams DetectorParams::resolved(bool have_noise_model) const {
+  DetectorParams p = *this;
+  if (p.mode == "auto") {
+    p.mode = have_noise_model ? "ztest" : "none";
+  }
+  return p;
+}
+
+void DetectorParams::validate() const {
+  if (mode != "auto" && mode != "none" && mode != "ztest" && mode != "cfar" &&
+      mode != "probability") {
+    throw Error("parameters", "detector.mode", "expected auto, none, ztest, cfar or probability");
+  }
+  if (smoothing < 1 || smoothing % 2 == 0) {
+    throw Error("parameters", "detector.smoothing", "expected an odd window size >= 1");
+  }
+  if (cfar_guard < 0 || cfar_train < 1) {
+    throw Error("parameters", "detector.cfar", "expected guard >= 0 and train >= 1 cells");
+  }
+  if (!(cfar_pfa > 0.0 && cfar_pfa < 1.0)) {
+    throw Error("parameters", "detector.cfar_pfa", "expected a probability in (0, 1)");
+  }
+}
+
+Detector::Detector(DetectorParams params, std::shared_ptr<const NoiseModel> model,
+                   const SonarModel& sonar)
+    : params_(params.resolved(model != nullptr)), model_(std::move(model)) {
+  params_.validate();
+  if (params_.needsNoiseModel()) {
+    if (!model_) {
+      throw Error("parameters", "detector." + params_.mode,
+                  "needs a noise model (sonarcarve-cli noise-model EMPTY_WATER_MISSION)");
+    }
+    model_->checkGeometry(sonar, "detector");
+    if (model_->smoothing() != params_.smoothing) {
+      throw Error("detector", "noise model",
+                  "learned with smoothing " + std::to_string(model_->smoothing()) +
+                      ", the detector smooths with " + std::to_string(params_.smoothing) +
+                      ": learn it again with the same smoothing");
+    }
+    threshold_ = model_->mean() + params_.z * model_->stddev();
+  }
+}
+
+cv::Mat Detector::apply(const cv::Mat& image) const {
+  if (params_.mode == "ztest") {
+    return zTest(image);
+  }
+  if (params_.mode == "cfar") {
+    return cfar(image);
+  }
+  if (params_.mode == "probability") {
+    return probability(image);
+  }
+  return image;
+}
+
+cv::Mat Detector::zTest(const cv::Mat& image) const {
+  // (I - mean) / std > z on the smoothed frame. Smoothing spreads a return into its
+  // neighbours: a pixel is kept only where its own intensity is also above the mean.
+  cv::Mat keep = smoothFrame(image, params_.smoothing) > threshold_;
+  if (params_.smoothing > 1) {
+    keep &= image > model_->mean();
+  }
+  cv::Mat out(image.size(), CV_32F, cv::Scalar(0.0f));
+  image.copyTo(out, keep);
+  return out;
+}
+
+double Detector::cfarAlpha() const {
+  const double n = 2.0 * params_.cfar_train;
+  return n * (std::pow(params_.cfar_pfa, -1.0 / n) - 1.0);
+}
+
+cv::Mat Detector::cfar(const cv::Mat& original) const {
+  const cv::Mat image = smoothFrame(original, params_.smoothing);
+  const int rows = image.rows;
+  const int guard = params_.cfar_guard;
+  const int train = params_.cfar_train;
+  const auto alpha = static_cast<float>(cfarAlpha());
+  cv::Mat out(image.size(), CV_32F, cv::Scalar(0.0f));
+  std::vector<double> prefix(static_cast<std::size_t>(rows) + 1);
+  for (int c = 0; c < image.cols; ++c) {
+    // Prefix sums of the power along this beam make each window O(1).
+    for (int r = 0; r < rows; ++r) {
+      const double v = image.at<float>(r, c);
+      prefix[static_cast<std::size_t>(r) + 1] = prefix[static_cast<std::size_t>(r)] + v * v;
+    }
+    const auto windowSum = [&](int from, int to) {  // [from, to), clamped to the beam
+      from = std::clamp(from, 0, rows);
+      to = std::clamp(to, 0, rows);
+      return std::pair{
+          prefix[static_cast<std::size_t>(to)] - prefix[static_cast<std::size_t>(from)], to - from};
+    };
+    for (int r = 0; r < rows; ++r) {
+      const auto [near_sum, near_n] = windowSum(r - guard - train, r - guard);
+      const auto [far_sum, far_n] = windowSum(r + guard + 1, r + guard + 1 + train);
+      const int n = near_n + far_n;
+      if (n == 0) {
+        continue;
+      }
+      const double noise = (near_sum + far_sum) / n;
+      const float v = image.at<float>(r, c);
+      if (static_cast<double>(v) * v > alpha * noise) {
+        out.at<float>(r, c) = original.at<float>(r, c);
+      }
+    }
+  }
+  return out;
+}
+
+cv::Mat Detector::probability(const cv::Mat& original) const {
+  const cv::Mat image = smoothFrame(original, params_.smoothing);
+  const cv::Mat& sigma = model_->rayleighSigma();
+  cv::Mat out(image.size(), CV_32F);
+  for (int r = 0; r < image.rows; ++r) {
+    const float* in = image.ptr<float>(r);
+    const float* s = sigma.ptr<float>(r);
+    float* o = out.ptr<float>(r);
+    for (int c = 0; c < image.cols; ++c) {
+      const float scale = std::max(s[c], 1e-3f);
+      const float u = in[c] / scale;
+      o[c] = 1.0f - std::exp(-0.5f * u * u);
+    }
+  }
+  return out;
+}
+
+}  // namespace sonarcarve

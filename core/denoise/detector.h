@@ -1,0 +1,72 @@
+// Detectors that separate returns from noise in a polar frame, before carving:
+//   none         the image as it is
+//   ztest        the seed paper's per-pixel Z-test against a NoiseModel: a pixel is kept
+//                (with its intensity) where (I - mean) / stddev > z, else it is empty water
+//   cfar         cell-averaging CFAR along range, needing no empty-water recording: the
+//                power I^2 of a cell is compared with alpha times the mean power of
+//                `train` cells on each side beyond `guard` cells; alpha sets the false-alarm
+//                rate for exponential (Rayleigh-amplitude) noise: alpha = N (Pfa^(-1/N) - 1)
+//   probability  the detection probability p = P(background < I) from the NoiseModel's
+//                per-pixel Rayleigh fit, p = 1 - exp(-I^2 / (2 sigma^2)), carried into
+//                carving instead of a hard decision (the engine sums the views' log-odds)
+// Thread safe: apply() may run concurrently.
+#pragma once
+
+#include <memory>
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "denoise/noise_model.h"
+
+namespace sonarcarve {
+
+struct DetectorParams {
+  // Defaults measured on the noisy riser demo (docs/denoising.md): with a 3 x 3 box filter,
+  // z = 2 gave the best F-score; min-carving removes the false alarms a low z lets through
+  // (noise must be lit in every view that sees a voxel), while a high z carves real
+  // surfaces wherever one view's speckle dips.
+  static constexpr double kDefaultZ = 2.0;
+  static constexpr int kDefaultSmoothing = 3;
+  /// auto | none | ztest | cfar | probability. auto: ztest when a noise model is given,
+  /// none otherwise.
+  std::string mode = "auto";
+  double z = kDefaultZ;
+  int cfar_guard = 3;      ///< cells on each side of the cell under test, skipped
+  int cfar_train = 12;     ///< cells on each side beyond the guard, averaged
+  double cfar_pfa = 0.05;  ///< false-alarm probability per cell (min-carving removes them)
+  /// Side of the box filter applied before the test (1 = none): it averages the speckle of
+  /// returns, so that one dark speckle does not carve a real surface. A noise model must
+  /// have been learned with the same smoothing. The kept intensity is the original pixel's.
+  int smoothing = kDefaultSmoothing;
+
+  bool needsNoiseModel() const { return mode == "ztest" || mode == "probability"; }
+  /// `auto` made concrete for whether a noise model is available.
+  DetectorParams resolved(bool have_noise_model) const;
+  /// Throws Error on an unknown mode or a value out of range.
+  void validate() const;
+};
+
+class Detector {
+ public:
+  /// `model` is required by ztest and probability (Error otherwise) and checked against
+  /// `sonar`'s geometry.
+  Detector(DetectorParams params, std::shared_ptr<const NoiseModel> model, const SonarModel& sonar);
+
+  /// CV_32F output of the frame's size: kept intensities (0 = empty water), or detection
+  /// probabilities in probability mode.
+  cv::Mat apply(const cv::Mat& image) const;
+  const DetectorParams& params() const { return params_; }
+  /// The CA-CFAR threshold factor for the parameters' training size and false-alarm rate.
+  double cfarAlpha() const;
+
+ private:
+  cv::Mat zTest(const cv::Mat& image) const;
+  cv::Mat cfar(const cv::Mat& image) const;
+  cv::Mat probability(const cv::Mat& image) const;
+
+  DetectorParams params_;
+  std::shared_ptr<const NoiseModel> model_;
+  cv::Mat threshold_;  // ztest: mean + z * stddev per pixel
+};
+
+}  // namespace sonarcarve

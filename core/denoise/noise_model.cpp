@@ -1,0 +1,172 @@
+#include "denoise/noise_model.h"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "common/error.h"
+#include "io/atomic_file.h"
+
+namespace sonarcarve {
+
+NoiseModel::NoiseModel(cv::Mat mean, cv::Mat stddev, cv::Mat rayleigh_sigma,
+                       const SonarModel& sonar, int frames)
+    : mean_(std::move(mean)),
+      stddev_(std::move(stddev)),
+      rayleigh_sigma_(std::move(rayleigh_sigma)),
+      range_min_m_(sonar.range().min_m),
+      range_resolution_m_(sonar.range().resolution_m),
+      bearings_rad_(sonar.bearings().centres()),
+      vertical_aperture_rad_(sonar.verticalAperture()),
+      frames_(frames) {
+  checkGeometry(sonar, "noise model");
+}
+
+cv::Mat smoothFrame(const cv::Mat& image, int size) {
+  if (size <= 1) {
+    return image;
+  }
+  cv::Mat out;
+  cv::blur(image, out, cv::Size(size, size), cv::Point(-1, -1), cv::BORDER_REPLICATE);
+  return out;
+}
+
+NoiseModel NoiseModel::learn(const Mission& mission, Progress& progress,
+                             std::vector<FrameProblem>* skipped, int smoothing) {
+  const int rows = mission.sonar.rows();
+  const int cols = mission.sonar.cols();
+  cv::Mat sum(rows, cols, CV_64F, cv::Scalar(0.0));
+  cv::Mat sum_sq(rows, cols, CV_64F, cv::Scalar(0.0));
+  int n = 0;
+  for (std::size_t i = 0; i < mission.frames.size(); ++i) {
+    if (progress.cancelled()) {
+      throw Cancelled();
+    }
+    Frame frame;
+    try {
+      frame = loadFrame(mission, i);
+    } catch (const Error& e) {
+      if (skipped != nullptr) {
+        skipped->push_back({i, e.what()});
+      }
+      continue;
+    }
+    cv::Mat f64;
+    smoothFrame(frame.image, smoothing).convertTo(f64, CV_64F);
+    sum += f64;
+    sum_sq += f64.mul(f64);
+    ++n;
+    progress.report("noise model", i + 1, mission.frames.size());
+  }
+  if (n < 2) {
+    throw Error(mission.folder.string(), "", "a noise model needs at least 2 readable frames");
+  }
+  cv::Mat mean = sum / n;
+  cv::Mat second = sum_sq / n;
+  cv::Mat variance = (second - mean.mul(mean)) * (static_cast<double>(n) / (n - 1));
+  cv::Mat stddev;
+  cv::sqrt(cv::max(variance, 0.0), stddev);
+  cv::Mat sigma;
+  cv::sqrt(second / 2.0, sigma);
+  NoiseModel model;
+  mean.convertTo(model.mean_, CV_32F);
+  stddev.convertTo(model.stddev_, CV_32F);
+  sigma.convertTo(model.rayleigh_sigma_, CV_32F);
+  model.range_min_m_ = mission.sonar.range().min_m;
+  model.range_resolution_m_ = mission.sonar.range().resolution_m;
+  model.bearings_rad_ = mission.sonar.bearings().centres();
+  model.vertical_aperture_rad_ = mission.sonar.verticalAperture();
+  model.frames_ = n;
+  model.smoothing_ = smoothing;
+  return model;
+}
+
+void NoiseModel::checkGeometry(const SonarModel& sonar, const std::string& what) const {
+  const auto mismatch = [&](const std::string& detail) {
+    throw Error(what, "noise model",
+                "learned for another sonar geometry (" + detail +
+                    "): learn a noise model from empty-water frames of this sonar");
+  };
+  if (mean_.rows != sonar.rows() || mean_.cols != sonar.cols()) {
+    mismatch(std::to_string(mean_.rows) + " x " + std::to_string(mean_.cols) +
+             " pixels, this sonar has " + std::to_string(sonar.rows()) + " x " +
+             std::to_string(sonar.cols()));
+  }
+  if (std::abs(range_min_m_ - sonar.range().min_m) > 1e-6 ||
+      std::abs(range_resolution_m_ - sonar.range().resolution_m) > 1e-9) {
+    mismatch("range bins differ");
+  }
+  for (int j = 0; j < sonar.cols(); ++j) {
+    if (std::abs(bearings_rad_[static_cast<std::size_t>(j)] - sonar.bearings().centre(j)) > 1e-6) {
+      mismatch("bearing table differs at beam " + std::to_string(j));
+    }
+  }
+}
+
+void NoiseModel::save(const std::filesystem::path& path) const {
+  replaceFileAtomically(path, [&](const std::filesystem::path& tmp) {
+    cv::FileStorage fs(tmp.string(), cv::FileStorage::WRITE);
+    if (!fs.isOpened()) {
+      throw Error(path.string(), "", "cannot write the noise model");
+    }
+    fs << "format"
+       << "sonarcarve-noise-model"
+       << "version" << 1 << "frames" << frames_ << "smoothing" << smoothing_;
+    fs << "rows" << mean_.rows << "cols" << mean_.cols << "range_min_m" << range_min_m_
+       << "range_resolution_m" << range_resolution_m_ << "vertical_aperture_rad"
+       << vertical_aperture_rad_ << "bearings_rad" << cv::Mat(bearings_rad_).t();
+    fs << "mean" << mean_ << "stddev" << stddev_ << "rayleigh_sigma" << rayleigh_sigma_;
+  });
+}
+
+NoiseModel NoiseModel::load(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  if (!std::filesystem::is_regular_file(path)) {
+    throw Error(file, "", "noise model not found");
+  }
+  NoiseModel model;
+  try {
+    cv::FileStorage fs(file, cv::FileStorage::READ);
+    if (!fs.isOpened()) {
+      throw Error(file, "", "cannot read the noise model (empty or not YAML)");
+    }
+    if (static_cast<std::string>(fs["format"]) != "sonarcarve-noise-model") {
+      throw Error(file, "format", "expected 'sonarcarve-noise-model'");
+    }
+    if (static_cast<int>(fs["version"]) != 1) {
+      throw Error(file, "version", "unknown noise model version: this build reads 1");
+    }
+    fs["frames"] >> model.frames_;
+    if (!fs["smoothing"].empty()) {
+      fs["smoothing"] >> model.smoothing_;
+    }
+    fs["range_min_m"] >> model.range_min_m_;
+    fs["range_resolution_m"] >> model.range_resolution_m_;
+    fs["vertical_aperture_rad"] >> model.vertical_aperture_rad_;
+    cv::Mat bearings;
+    fs["bearings_rad"] >> bearings;
+    fs["mean"] >> model.mean_;
+    fs["stddev"] >> model.stddev_;
+    fs["rayleigh_sigma"] >> model.rayleigh_sigma_;
+    if (bearings.empty() || model.mean_.empty() || model.stddev_.empty() ||
+        model.rayleigh_sigma_.empty()) {
+      throw Error(file, "",
+                  "incomplete noise model: expected bearings_rad, mean, stddev and "
+                  "rayleigh_sigma");
+    }
+    bearings.reshape(1, 1).convertTo(bearings, CV_64F);
+    model.bearings_rad_.assign(bearings.begin<double>(), bearings.end<double>());
+    for (cv::Mat* m : {&model.mean_, &model.stddev_, &model.rayleigh_sigma_}) {
+      if (m->size() != model.mean_.size() || m->type() != CV_32F) {
+        throw Error(file, "", "noise model matrices must be CV_32F and of one size");
+      }
+    }
+    if (static_cast<int>(model.bearings_rad_.size()) != model.mean_.cols) {
+      throw Error(file, "bearings_rad", "expected one bearing per column");
+    }
+  } catch (const cv::Exception& e) {
+    throw Error(file, "", std::string("corrupt noise model: ") + e.what());
+  }
+  return model;
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,160 @@
+// Detectors and noise models: false-alarm rates against theory, CFAR on a point target of
+// known SNR, geometry checks, files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "common/angles.h"
+#include "common/error.h"
+#include "denoise/detector.h"
+#include "denoise/noise_model.h"
+#include "io/mission_writer.h"
+#include "support/test_support.h"
+
+namespace sonarcarve {
+namespace {
+
+SonarModel smallSonar(int bins = 400, int beams = 100) {
+  return SonarModel("s", RangeBins{0.0, 0.02, bins}, BearingTable::uniform(degToRad(60), beams),
+                    degToRad(20));
+}
+
+// A model of unit-free Gaussian noise: mean 100, stddev 10 everywhere.
+std::shared_ptr<const NoiseModel> gaussianModel(const SonarModel& sonar) {
+  const cv::Size size(sonar.cols(), sonar.rows());
+  return std::make_shared<const NoiseModel>(cv::Mat(size, CV_32F, cv::Scalar(100.0f)),
+                                            cv::Mat(size, CV_32F, cv::Scalar(10.0f)),
+                                            cv::Mat(size, CV_32F, cv::Scalar(70.0f)), sonar, 100);
+}
+
+double fractionKept(const cv::Mat& detected) {
+  return static_cast<double>(cv::countNonZero(detected)) / static_cast<double>(detected.total());
+}
+
+TEST(ZTest, FalseAlarmRateOnGaussianNoiseMatchesTheNormalTail) {
+  const SonarModel sonar = smallSonar();
+  std::mt19937 rng(3);
+  std::normal_distribution<float> noise(100.0f, 10.0f);
+  cv::Mat image(sonar.rows(), sonar.cols(), CV_32F);
+  for (auto it = image.begin<float>(); it != image.end<float>(); ++it) {
+    *it = noise(rng);
+  }
+  for (double z : {1.0, 2.0, 3.0}) {
+    DetectorParams params;
+    params.mode = "ztest";
+    params.z = z;
+    params.smoothing = 1;
+    const Detector detector(params, gaussianModel(sonar), sonar);
+    const double expected = 0.5 * std::erfc(z / std::sqrt(2.0));
+    // 40,000 pixels: the binomial standard error is sqrt(p (1 - p) / n); allow 4 of them.
+    const double tolerance = 4.0 * std::sqrt(expected * (1.0 - expected) / image.total());
+    EXPECT_NEAR(fractionKept(detector.apply(image)), expected, tolerance) << "z " << z;
+  }
+}
+
+TEST(ZTest, KeptPixelsKeepTheirIntensity) {
+  const SonarModel sonar = smallSonar();
+  cv::Mat image(sonar.rows(), sonar.cols(), CV_32F, cv::Scalar(100.0f));
+  image.at<float>(10, 20) = 250.0f;
+  DetectorParams params;
+  params.mode = "ztest";
+  params.smoothing = 1;
+  const cv::Mat out = Detector(params, gaussianModel(sonar), sonar).apply(image);
+  EXPECT_EQ(out.at<float>(10, 20), 250.0f);
+  EXPECT_EQ(cv::countNonZero(out), 1);
+}
+
+TEST(Cfar, DetectsAPointTargetOfKnownSnrAndHoldsItsFalseAlarmRate) {
+  const SonarModel sonar = smallSonar();
+  std::mt19937 rng(5);
+  const float sigma = 50.0f;  // Rayleigh amplitude: power is exponential, mean 2 sigma^2
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  cv::Mat image(sonar.rows(), sonar.cols(), CV_32F);
+  for (auto it = image.begin<float>(); it != image.end<float>(); ++it) {
+    *it = sigma * std::sqrt(-2.0f * std::log(1.0f - u(rng)));
+  }
+  DetectorParams params;
+  params.mode = "cfar";
+  params.smoothing = 1;
+  params.cfar_pfa = 1e-3;
+  const Detector detector(params, nullptr, sonar);
+  const double rate = fractionKept(detector.apply(image));
+  // Away from the beam ends the training window is full and the rate is the design Pfa.
+  EXPECT_NEAR(rate, 1e-3, 4.0 * std::sqrt(1e-3 / image.total()) + 2e-4);
+  // A target 20 dB above the mean noise power, in every beam at bin 200.
+  const float amplitude = std::sqrt(100.0f * 2.0f * sigma * sigma);
+  image.row(200).setTo(amplitude);
+  const cv::Mat out = detector.apply(image);
+  EXPECT_EQ(cv::countNonZero(out.row(200)), sonar.cols());
+  EXPECT_NEAR(detector.cfarAlpha(), 24.0 * (std::pow(1e-3, -1.0 / 24.0) - 1.0), 1e-12);
+}
+
+TEST(NoiseModel, LearnsTheBackgroundOfEmptyWaterFrames) {
+  test::ScratchDir dir;
+  const SonarModel sonar = smallSonar(50, 20);
+  MissionWriter writer(dir.path() / "empty", "empty", sonar, Mounting{});
+  std::mt19937 rng(9);
+  std::normal_distribution<float> noise(200.0f, 20.0f);
+  std::vector<NavSample> nav;
+  for (int i = 0; i < 60; ++i) {
+    Frame frame{static_cast<double>(i), "s", cv::Mat(sonar.rows(), sonar.cols(), CV_32F)};
+    for (auto it = frame.image.begin<float>(); it != frame.image.end<float>(); ++it) {
+      *it = noise(rng);
+    }
+    writer.addFrame(frame);
+    NavSample s;
+    s.time_s = i;
+    nav.push_back(s);
+  }
+  writer.finish(NavTrack(nav));
+  SilentProgress progress;
+  const NoiseModel model =
+      NoiseModel::learn(readMission(dir.path() / "empty"), progress, nullptr, 1);
+  EXPECT_EQ(model.frames(), 60);
+  // Per pixel, 60 samples: the mean is known to 20 / sqrt(60) = 2.6 counts.
+  EXPECT_NEAR(cv::mean(model.mean())[0], 200.0, 1.0);
+  EXPECT_NEAR(cv::mean(model.stddev())[0], 20.0, 1.0);
+  model.save(dir.path() / "noise.yaml");
+  const NoiseModel back = NoiseModel::load(dir.path() / "noise.yaml");
+  EXPECT_EQ(cv::norm(back.mean(), model.mean(), cv::NORM_INF), 0.0);
+  EXPECT_EQ(back.smoothing(), 1);
+}
+
+TEST(NoiseModel, AModelOfAnotherGeometryIsRefusedWithAClearMessage) {
+  const SonarModel sonar = smallSonar();
+  DetectorParams params;
+  params.mode = "ztest";
+  params.smoothing = 1;
+  try {
+    Detector(params, gaussianModel(smallSonar(300, 100)), sonar);
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("another sonar geometry"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("300 x 100"), std::string::npos) << e.what();
+  }
+  const SonarModel wider("s", RangeBins{0.0, 0.02, 400}, BearingTable::uniform(degToRad(90), 100),
+                         degToRad(20));
+  EXPECT_THROW(Detector(params, gaussianModel(wider), sonar), Error);
+  params.smoothing = 3;  // the model was learned without smoothing
+  EXPECT_THROW(Detector(params, gaussianModel(sonar), sonar), Error);
+  params.mode = "ztest";
+  EXPECT_THROW(Detector(params, nullptr, sonar), Error);  // no model at all
+}
+
+TEST(NoiseModel, BrokenFilesGetClearErrors) {
+  test::ScratchDir dir;
+  EXPECT_THROW(NoiseModel::load(dir.path() / "missing.yaml"), Error);
+  test::writeText(dir.path() / "empty.yaml", "");
+  EXPECT_THROW(NoiseModel::load(dir.path() / "empty.yaml"), Error);
+  test::writeText(dir.path() / "other.yaml", "%YAML:1.0\n---\nformat: something\n");
+  EXPECT_THROW(NoiseModel::load(dir.path() / "other.yaml"), Error);
+  const SonarModel sonar = smallSonar(20, 10);
+  gaussianModel(sonar)->save(dir.path() / "good.yaml");
+  const std::string text = test::readText(dir.path() / "good.yaml");
+  test::writeText(dir.path() / "cut.yaml", text.substr(0, text.size() / 2));
+  EXPECT_THROW(NoiseModel::load(dir.path() / "cut.yaml"), Error);
+}
+
+}  // namespace
+}  // namespace sonarcarve
