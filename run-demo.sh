@@ -23,5 +23,6 @@ echo "  mission/                       the simulated mission (frames, navigation
 echo "  noise.yaml                     the noise model learned from empty-water frames"
 echo "  frame60_fan.png                one sonar frame drawn as its fan (and _polar, _denoised)"
 echo "  reconstruction/surface_points.ply   the 3D surface (x, y, z, intensity, views)"
+echo "  reconstruction/mesh.ply, mesh.stl   its mesh (world NED frame, metres)"
 echo "  reconstruction/map.bt          the carved map (open with octovis)"
 echo "  reconstruction/report.json     timings and accuracy against the ground truth"

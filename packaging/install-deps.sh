@@ -13,7 +13,7 @@ packages=(
   # GUI
   qt6-base-dev libgl-dev libgl1-mesa-dri
   # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools assimp-utils
 )
 
 missing=()

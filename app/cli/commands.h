@@ -13,5 +13,6 @@ void addFrameCommand(CLI::App& app, int& exit_code);
 void addReconstructCommand(CLI::App& app, int& exit_code);
 void addEvaluateCommand(CLI::App& app, int& exit_code);
 void addNoiseModelCommand(CLI::App& app, int& exit_code);
+void addExportCommand(CLI::App& app, int& exit_code);
 
 }  // namespace sonarcarve::cli

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   sonarcarve::cli::addSimulateCommand(app, exit_code);
   sonarcarve::cli::addReconstructCommand(app, exit_code);
   sonarcarve::cli::addEvaluateCommand(app, exit_code);
+  sonarcarve::cli::addExportCommand(app, exit_code);
   sonarcarve::cli::addNoiseModelCommand(app, exit_code);
   addPendingCommand(app, "import", "Import a vendor sonar log into a mission", exit_code);
   sonarcarve::cli::addBenchCommand(app, exit_code);

@@ -1,6 +1,7 @@
 // `sonarcarve-cli reconstruct MISSION --out DIR`: carve, resolve occlusions, export.
-// Writes DIR/surface_points.ply, DIR/map.bt (fast engine), DIR/params.yaml (what was used)
-// and DIR/report.json; a simulated mission's ground truth, when present, is evaluated too.
+// Writes DIR/surface_points.ply, DIR/mesh.ply and DIR/mesh.stl (world NED, metres), DIR/map.bt
+// (fast engine), DIR/params.yaml (what was used) and DIR/report.json; a simulated mission's
+// ground truth, when present, is evaluated too.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include "eval/evaluator.h"
 #include "io/atomic_file.h"
 #include "io/mission.h"
+#include "mesh/mesh_export.h"
 #include "pipeline/reconstruction.h"
 #include "sim/scene_io.h"
 
@@ -99,6 +101,13 @@ int runReconstruct(const ReconstructOptions& o) {
   if (result.map) {
     writeOccupancyBt(*result.map, out / "map.bt");
   }
+  if (!result.mesh.triangles.empty()) {
+    ExportOptions ply;
+    exportMesh(result.mesh, out / "mesh.ply", ply);
+    ExportOptions stl;
+    stl.format = "stl";
+    exportMesh(result.mesh, out / "mesh.stl", stl);
+  }
   writeFileAtomically(out / "params.yaml", params.toYaml());
 
   nlohmann::json report = {{"mission", mission.folder.string()},
@@ -111,6 +120,8 @@ int runReconstruct(const ReconstructOptions& o) {
                            {"cancelled", result.cancelled},
                            {"occupied_voxels", result.occupied_voxels},
                            {"surface_points", result.surface.size()},
+                           {"mesh_vertices", result.mesh.vertices.size()},
+                           {"mesh_triangles", result.mesh.triangles.size()},
                            {"map_megabytes", static_cast<double>(result.map_bytes) / 1e6},
                            {"carve_ms_per_frame_median", result.carve_ms_median},
                            {"occlusion_ms_per_frame", result.occlusion_ms_per_frame},
@@ -127,6 +138,14 @@ int runReconstruct(const ReconstructOptions& o) {
                  std::filesystem::exists(visible_file) ? readPointsPly(visible_file)
                                                        : std::vector<Eigen::Vector3f>{});
     report["evaluation"] = nlohmann::json::parse(eval.toJson());
+    if (!result.mesh.vertices.empty()) {
+      // Mesh accuracy: distance from the mesh vertices to the ground truth.
+      const EvaluationResult mesh_eval =
+          evaluate(result.mesh.vertices, loadSceneMesh(truth),
+                   std::filesystem::exists(visible_file) ? readPointsPly(visible_file)
+                                                         : std::vector<Eigen::Vector3f>{});
+      report["mesh_evaluation"] = nlohmann::json::parse(mesh_eval.toJson());
+    }
   }
   writeFileAtomically(out / "report.json", report.dump(2) + "\n");
   std::cout << report.dump(2) << "\n";

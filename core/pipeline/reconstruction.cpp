@@ -260,6 +260,13 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   }
   result.occlusion_ms_per_frame = msSince(t_occlusion) / static_cast<double>(used.size());
   result.surface = resolver.result(params.min_views);
+  if (params.mesh_enabled && result.surface.size() >= 10 && !result.cancelled) {
+    MeshParams mesh = params.mesh;
+    mesh.voxel_size_m = carve.voxel_size_m;
+    progress.report("mesh", 0, 1);
+    result.mesh = meshSurface(result.surface, mesh);
+    progress.report("mesh", 1, 1);
+  }
   result.total_s = msSince(t_start) / 1000.0;
   return result;
 }

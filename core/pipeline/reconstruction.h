@@ -17,6 +17,7 @@
 #include "carve/voxel_map.h"
 #include "common/progress.h"
 #include "io/mission.h"
+#include "mesh/surface_mesher.h"
 #include "occlusion/surface_points.h"
 #include "pipeline/reconstruction_params.h"
 
@@ -44,6 +45,7 @@ class ReconstructionObserver {
 
 struct ReconstructionResult {
   SurfacePoints surface;
+  Mesh mesh;                      ///< empty when meshing is off or there are too few points
   std::unique_ptr<VoxelMap> map;  ///< the carved map (fast engine)
   std::size_t frames_used = 0;
   std::vector<FrameProblem> skipped;

@@ -87,6 +87,32 @@ ReconstructionParams ReconstructionParams::fromYamlFile(const std::string& path)
       p.carve.carve_log_odds = f.number(d["carve_log_odds"], "detector.carve_log_odds");
     }
   }
+  if (const YAML::Node m = root["mesh"]) {
+    if (m["enabled"]) {
+      p.mesh_enabled = m["enabled"].as<bool>();
+    }
+    if (m["method"]) {
+      p.mesh.method = f.text(m["method"], "mesh.method");
+    }
+    if (m["smoothing_iterations"]) {
+      p.mesh.smoothing_iterations =
+          static_cast<int>(f.number(m["smoothing_iterations"], "mesh.smoothing_iterations"));
+    }
+    if (m["occupancy_sigma_voxels"]) {
+      p.mesh.occupancy_sigma_voxels =
+          f.positive(m["occupancy_sigma_voxels"], "mesh.occupancy_sigma_voxels");
+    }
+    if (m["occupancy_iso"]) {
+      p.mesh.occupancy_iso = f.positive(m["occupancy_iso"], "mesh.occupancy_iso");
+    }
+    if (m["decimate"]) {
+      p.mesh.decimate = f.number(m["decimate"], "mesh.decimate");
+    }
+    if (m["min_fragment_triangles"]) {
+      p.mesh.min_fragment_triangles = static_cast<std::size_t>(
+          f.positiveInt(m["min_fragment_triangles"], "mesh.min_fragment_triangles"));
+    }
+  }
   if (root["noise_model"]) {
     std::filesystem::path model = f.text(root["noise_model"], "noise_model");
     if (model.is_relative()) {
@@ -120,6 +146,7 @@ void ReconstructionParams::validate() const {
     throw Error("parameters", "range_min_m/range_max_m", "expected 0 <= min < max (0 = sonar's)");
   }
   detector.validate();
+  mesh.validate();
   if (detector.needsNoiseModel() && noise_model.empty()) {
     throw Error("parameters", "noise_model",
                 "the " + detector.mode + " detector needs a noise model file");
@@ -157,6 +184,10 @@ std::string ReconstructionParams::toYaml() const {
       << ", arc_prior: " << shortestNumber(carve.arc_prior)
       << ", carve_log_odds: " << shortestNumber(carve.carve_log_odds)
       << ", smoothing: " << detector.smoothing << "}\n";
+  out << "mesh: {enabled: " << (mesh_enabled ? "true" : "false") << ", method: " << mesh.method
+      << ", smoothing_iterations: " << mesh.smoothing_iterations
+      << ", decimate: " << shortestNumber(mesh.decimate)
+      << ", min_fragment_triangles: " << mesh.min_fragment_triangles << "}\n";
   if (!noise_model.empty()) {
     out << "noise_model: " << std::filesystem::absolute(noise_model).string() << "\n";
   }

@@ -9,6 +9,8 @@
 //   detector: {mode: none|ztest|cfar|probability, z, cfar_guard, cfar_train, cfar_pfa,
 //              arc_prior, carve_log_odds, smoothing}
 //   noise_model: PATH                                (relative to the YAML file's folder)
+//   mesh: {enabled, method: implicit|occupancy, smoothing_iterations, decimate,
+//          min_fragment_triangles}
 #pragma once
 
 #include <cstdint>
@@ -16,6 +18,7 @@
 
 #include "carve/carve_params.h"
 #include "denoise/detector.h"
+#include "mesh/surface_mesher.h"
 
 namespace sonarcarve {
 
@@ -23,6 +26,9 @@ struct ReconstructionParams {
   std::string engine = "fast";
   CarveParams carve;
   DetectorParams detector;
+  /// Surface mesh from the surface points (voxel_size_m follows carve.voxel_size_m).
+  bool mesh_enabled = true;
+  MeshParams mesh;
   /// Noise model file for the ztest and probability detectors ("" = none).
   std::string noise_model;
   std::size_t first_frame = 0;

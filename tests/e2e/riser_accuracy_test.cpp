@@ -16,6 +16,19 @@ namespace {
 using test::quoted;
 using test::runCli;
 
+std::string commandOutput(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  std::string text;
+  if (pipe == nullptr) {
+    return text;
+  }
+  char buffer[512];
+  while (std::fgets(buffer, sizeof(buffer), pipe) != nullptr)
+    text += buffer;
+  pclose(pipe);
+  return text;
+}
+
 TEST(RiserAccuracy, NoiseFreeRiserIsReconstructedWithinTheVoxelSize) {
   test::ScratchDir dir;
   const auto mission = dir.path() / "riser";
@@ -40,6 +53,32 @@ TEST(RiserAccuracy, NoiseFreeRiserIsReconstructedWithinTheVoxelSize) {
   const auto j = nlohmann::json::parse(eval.output);
   EXPECT_NEAR(j.at("completeness").get<double>(), e.at("completeness").get<double>(), 1e-9);
   EXPECT_EQ(j.at("reconstructed_points"), report.at("surface_points"));
+
+  // The mesh: distance from its vertices to the ground truth.
+  const auto& mesh = report.at("mesh_evaluation");
+  EXPECT_LE(mesh.at("accuracy_median_m").get<double>(), 0.02) << mesh.dump(2);
+  EXPECT_LE(mesh.at("accuracy_p90_m").get<double>(), 0.05) << mesh.dump(2);
+
+  // Other tools open the deliverables: assimp (Debian's assimp-utils) for PLY, ASCII PLY,
+  // STL and OBJ, with the vertex and face counts of our mesh.
+  ASSERT_EQ(runCli("export " + quoted(out) + " --out " + quoted(out / "mesh.obj")).exit_code, 0);
+  ASSERT_EQ(runCli("export " + quoted(out) + " --format ply-ascii --frame zup --out " +
+                   quoted(out / "mesh_zup.ply"))
+                .exit_code,
+            0);
+  const long vertices = report.at("mesh_vertices").get<long>();
+  const long faces = report.at("mesh_triangles").get<long>();
+  ASSERT_GT(faces, 1000);
+  for (const char* file : {"mesh.ply", "mesh_zup.ply", "mesh.stl", "mesh.obj"}) {
+    const std::string text = commandOutput("assimp info " + quoted(out / file));
+    std::smatch match;
+    ASSERT_TRUE(std::regex_search(text, match, std::regex("Faces:\\s+(\\d+)"))) << file << text;
+    EXPECT_EQ(std::stol(match[1]), faces) << file;
+    if (std::string(file).find(".ply") != std::string::npos) {
+      ASSERT_TRUE(std::regex_search(text, match, std::regex("Vertices:\\s+(\\d+)"))) << text;
+      EXPECT_EQ(std::stol(match[1]), vertices) << file;
+    }
+  }
 
   // OctoMap's own bt2vrml reads the exported occupancy tree.
   if (std::system("command -v bt2vrml > /dev/null 2>&1") == 0) {

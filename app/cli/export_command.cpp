@@ -1,0 +1,53 @@
+// `sonarcarve-cli export RECONSTRUCTION --out FILE`: a finished reconstruction's mesh or points
+// in another format, frame or crop, without recomputing anything.
+#include <iostream>
+
+#include "cli/commands.h"
+#include "common/error.h"
+#include "mesh/mesh_export.h"
+
+namespace sonarcarve::cli {
+
+void addExportCommand(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand(
+      "export", "Convert a reconstruction's mesh or points to another format, frame or crop");
+  struct Options {
+    std::string reconstruction, out, format, frame = "ned";
+    std::vector<double> origin, crop;
+    bool points = false;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("reconstruction", o->reconstruction, "Folder written by reconstruct")->required();
+  cmd->add_option("--out", o->out, "File to write (.ply, .stl, .obj)")->required();
+  cmd->add_option("--format", o->format, "ply | ply-ascii | stl | obj (default: from --out)");
+  cmd->add_option("--frame", o->frame,
+                  "ned (as inside) | zup (x east, y north, z up, for CAD tools)")
+      ->capture_default_str();
+  cmd->add_option("--origin", o->origin, "Origin subtracted first: N E D (m)")->expected(3);
+  cmd->add_option("--crop", o->crop, "Keep only inside the box N0 E0 D0 N1 E1 D1 (m, NED)")
+      ->expected(6);
+  cmd->add_flag("--points", o->points, "Export the surface points instead of the mesh (PLY)");
+  cmd->callback([o, &exit_code] {
+    ExportOptions options;
+    options.format = o->format.empty() ? formatOfPath(o->out) : o->format;
+    options.frame = o->frame;
+    if (!o->origin.empty()) {
+      options.origin_ned_m = Eigen::Vector3d(o->origin[0], o->origin[1], o->origin[2]);
+    }
+    if (!o->crop.empty()) {
+      options.crop_ned_m = Eigen::AlignedBox3d(Eigen::Vector3d(o->crop[0], o->crop[1], o->crop[2]),
+                                               Eigen::Vector3d(o->crop[3], o->crop[4], o->crop[5]));
+    }
+    const std::filesystem::path folder(o->reconstruction);
+    if (o->points) {
+      exportPoints(readSurfacePointsPly(folder / "surface_points.ply"), o->out, options);
+    } else {
+      exportMesh(readMeshPly(folder / "mesh.ply"), o->out, options);
+    }
+    std::cout << "wrote " << o->out << " (" << options.format << ", " << options.frame
+              << " frame)\n";
+    exit_code = 0;
+  });
+}
+
+}  // namespace sonarcarve::cli

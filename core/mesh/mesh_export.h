@@ -1,0 +1,41 @@
+// Deliverables: meshes and point clouds as files other tools open (docs/formats.md).
+//   ply        binary little-endian PLY: vertices (x, y, z, nx, ny, nz, intensity, views)
+//              and triangles; `ply-ascii` the same in ASCII
+//   stl        binary STL (triangles only)
+//   obj        Wavefront OBJ with vertex normals
+// Units are metres. Frames: `ned` writes the world frame as inside (north, east, down);
+// `zup` writes x = east, y = north, z = up (= -down), the right-handed Z-up frame CAD tools
+// expect, minus an optional origin (NED) so that coordinates stay small. An optional crop box
+// (NED) keeps the triangles whose three vertices are inside it. Every file is written to a
+// temporary name and renamed: a failure keeps the previous file.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "mesh/surface_mesher.h"
+#include "occlusion/surface_points.h"
+
+namespace sonarcarve {
+
+struct ExportOptions {
+  std::string format = "ply";                              ///< ply | ply-ascii | stl | obj
+  std::string frame = "ned";                               ///< ned | zup
+  Eigen::Vector3d origin_ned_m = Eigen::Vector3d::Zero();  ///< subtracted first
+  std::optional<Eigen::AlignedBox3d> crop_ned_m;
+  void validate() const;
+};
+
+/// The format a file name asks for (.ply, .stl, .obj), or throws Error.
+std::string formatOfPath(const std::filesystem::path& path);
+
+void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const ExportOptions& options);
+/// Points as PLY (ply or ply-ascii) with intensity and views; other formats refused.
+void exportPoints(const SurfacePoints& points, const std::filesystem::path& path,
+                  const ExportOptions& options);
+/// Reads a mesh written by exportMesh in PLY (any frame; no conversion back).
+Mesh readMeshPly(const std::filesystem::path& path);
+
+}  // namespace sonarcarve

@@ -1,0 +1,127 @@
+// Meshing and exports: a sphere's points give a closed mesh near the sphere; frames, crops,
+// formats and atomic writes of the exporters.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+#include "common/error.h"
+#include "mesh/mesh_export.h"
+#include "mesh/surface_mesher.h"
+#include "support/test_support.h"
+
+namespace sonarcarve {
+namespace {
+
+// A sphere of radius 0.5 m at (10, 20, 30) as carving gives it: the centres of the 2 cm
+// voxels its surface crosses.
+SurfacePoints spherePoints() {
+  SurfacePoints points;
+  std::set<std::tuple<int, int, int>> seen;
+  const Eigen::Vector3f centre(10, 20, 30);
+  for (int i = 0; i < 160; ++i) {
+    const double polar = M_PI * (i + 0.5) / 160;
+    const int around = std::max(1, static_cast<int>(320 * std::sin(polar)));
+    for (int j = 0; j < around; ++j) {
+      const double azimuth = 2 * M_PI * j / around;
+      const Eigen::Vector3f d(static_cast<float>(std::sin(polar) * std::cos(azimuth)),
+                              static_cast<float>(std::sin(polar) * std::sin(azimuth)),
+                              static_cast<float>(std::cos(polar)));
+      const Eigen::Vector3f p = centre + 0.5f * d;
+      const Eigen::Vector3i v = (p / 0.02f).array().floor().cast<int>();
+      if (seen.insert({v.x(), v.y(), v.z()}).second) {
+        const Eigen::Vector3f voxel_centre =
+            (v.cast<float>() + Eigen::Vector3f::Constant(0.5f)) * 0.02f;
+        points.push_back({voxel_centre, 100.0f + static_cast<float>(i), 7});
+      }
+    }
+  }
+  return points;
+}
+
+TEST(Mesher, OccupancyMeshLiesWithinAVoxelOfTheSurface) {
+  const Mesh mesh = meshSurface(spherePoints(), MeshParams{});
+  ASSERT_GT(mesh.triangles.size(), 1000u);
+  ASSERT_EQ(mesh.vertices.size(), mesh.normals.size());
+  ASSERT_EQ(mesh.vertices.size(), mesh.intensity.size());
+  // Voxel centres lie up to half a diagonal (1.7 cm) from the sphere, the voxels a surface
+  // crosses form a layer up to two voxels thick, and the skin lies up to 0.8 voxel (1.6 cm)
+  // outside that layer on either side: every vertex within 3.5 cm of the sphere, half of
+  // them within 1.25 voxels (2.5 cm).
+  std::vector<float> errors;
+  for (const auto& v : mesh.vertices) {
+    errors.push_back(std::abs((v - Eigen::Vector3f(10, 20, 30)).norm() - 0.5f));
+    ASSERT_LT(errors.back(), 0.035f);
+  }
+  std::nth_element(errors.begin(), errors.begin() + static_cast<long>(errors.size() / 2),
+                   errors.end());
+  EXPECT_LT(errors[errors.size() / 2], 0.025f);
+  EXPECT_EQ(mesh.views.front(), 7u);  // properties come from the nearest point
+}
+
+TEST(Mesher, SmallFragmentsAreRemoved) {
+  SurfacePoints points = spherePoints();
+  points.push_back({Eigen::Vector3f(15, 20, 30), 50.0f, 1});  // a stray point far away
+  MeshParams params;
+  const Mesh mesh = meshSurface(points, params);
+  for (const auto& v : mesh.vertices) {
+    ASSERT_LT((v - Eigen::Vector3f(10, 20, 30)).norm(), 1.0f);
+  }
+  EXPECT_THROW(meshSurface(SurfacePoints(5), params), Error);
+}
+
+Mesh oneTriangle() {
+  Mesh m;
+  m.vertices = {{1, 2, 3}, {2, 2, 3}, {1, 3, 3}};
+  m.normals = {{0, 0, -1}, {0, 0, -1}, {0, 0, -1}};
+  m.triangles = {{0, 1, 2}};
+  m.intensity = {1, 2, 3};
+  m.views = {4, 5, 6};
+  return m;
+}
+
+TEST(MeshExport, ZUpFrameSwapsNorthEastAndFlipsDown) {
+  test::ScratchDir dir;
+  ExportOptions options;
+  options.frame = "zup";
+  options.origin_ned_m = Eigen::Vector3d(1, 0, 0);
+  exportMesh(oneTriangle(), dir.path() / "m.ply", options);
+  const Mesh back = readMeshPly(dir.path() / "m.ply");
+  ASSERT_EQ(back.vertices.size(), 3u);
+  EXPECT_TRUE(back.vertices[0].isApprox(Eigen::Vector3f(2, 0, -3)));  // (e, n - 1, -d)
+  EXPECT_TRUE(back.normals[0].isApprox(Eigen::Vector3f(0, 0, 1)));    // down becomes -up
+  EXPECT_EQ(back.views[2], 6u);
+  EXPECT_FLOAT_EQ(back.intensity[1], 2.0f);
+}
+
+TEST(MeshExport, CropKeepsTrianglesInsideTheBox) {
+  test::ScratchDir dir;
+  ExportOptions options;
+  options.crop_ned_m = Eigen::AlignedBox3d(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1.5, 5, 5));
+  EXPECT_THROW(exportMesh(oneTriangle(), dir.path() / "m.ply", options), Error);
+  options.crop_ned_m = Eigen::AlignedBox3d(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(5, 5, 5));
+  exportMesh(oneTriangle(), dir.path() / "m.ply", options);
+  EXPECT_EQ(readMeshPly(dir.path() / "m.ply").triangles.size(), 1u);
+}
+
+TEST(MeshExport, AFailedExportKeepsThePreviousFile) {
+  test::ScratchDir dir;
+  const auto path = dir.path() / "deliverable.stl";
+  ExportOptions stl;
+  stl.format = "stl";
+  exportMesh(oneTriangle(), path, stl);
+  const std::string before = test::readText(path);
+  Mesh empty;
+  EXPECT_THROW(exportMesh(empty, path, stl), Error);
+  EXPECT_EQ(test::readText(path), before);
+  ExportOptions bad;
+  bad.format = "dwg";
+  EXPECT_THROW(exportMesh(oneTriangle(), dir.path() / "x.dwg", bad), Error);
+  EXPECT_THROW(formatOfPath("mesh.dxf"), Error);
+  EXPECT_EQ(formatOfPath("MESH.STL"), "stl");
+}
+
+}  // namespace
+}  // namespace sonarcarve
