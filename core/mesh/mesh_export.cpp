@@ -17,6 +17,7 @@
 #include "io/atomic_file.h"
 #include "io/ply_check.h"
 #include "io/point_cloud_ply.h"
+#include "sim/vtk_mesh.h"
 
 namespace sonarcarve {
 namespace {
@@ -103,25 +104,14 @@ std::string plyText(const Mesh& m, bool ascii) {
 }
 
 vtkSmartPointer<vtkPolyData> polyData(const Mesh& m) {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(m.vertices.size()));
+  auto poly = triangleMesh(m.vertices, m.triangles);
   auto normals = vtkSmartPointer<vtkFloatArray>::New();
   normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(static_cast<vtkIdType>(m.vertices.size()));
-  for (std::size_t i = 0; i < m.vertices.size(); ++i) {
-    const auto id = static_cast<vtkIdType>(i);
-    points->SetPoint(id, m.vertices[i].x(), m.vertices[i].y(), m.vertices[i].z());
-    normals->SetTuple3(id, m.normals[i].x(), m.normals[i].y(), m.normals[i].z());
+  normals->SetNumberOfTuples(static_cast<vtkIdType>(m.normals.size()));
+  for (std::size_t i = 0; i < m.normals.size(); ++i) {
+    normals->SetTuple3(static_cast<vtkIdType>(i), m.normals[i].x(), m.normals[i].y(),
+                       m.normals[i].z());
   }
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& t : m.triangles) {
-    const vtkIdType ids[3] = {t[0], t[1], t[2]};
-    cells->InsertNextCell(3, ids);
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetPolys(cells);
   poly->GetPointData()->SetNormals(normals);
   return poly;
 }
@@ -226,16 +216,7 @@ Mesh readMeshPly(const std::filesystem::path& path) {
     mesh.normals.emplace_back(nx[i], ny[i], nz[i]);
     mesh.views.push_back(static_cast<std::uint32_t>(views[i]));
   }
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  vtkCellArray* polys = poly->GetPolys();
-  polys->InitTraversal();
-  while (polys->GetNextCell(ids)) {
-    if (ids->GetNumberOfIds() == 3) {
-      mesh.triangles.push_back({static_cast<std::uint32_t>(ids->GetId(0)),
-                                static_cast<std::uint32_t>(ids->GetId(1)),
-                                static_cast<std::uint32_t>(ids->GetId(2))});
-    }
-  }
+  mesh.triangles = trianglesOf(poly);
   if (mesh.triangles.empty()) {
     throw Error(path.string(), "", "no triangles: expected a mesh PLY");
   }

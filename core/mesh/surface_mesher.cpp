@@ -19,6 +19,7 @@
 #include <vtkWindowedSincPolyDataFilter.h>
 
 #include "common/error.h"
+#include "sim/vtk_mesh.h"
 
 namespace sonarcarve {
 namespace {
@@ -197,16 +198,7 @@ Mesh meshSurface(const SurfacePoints& points, const MeshParams& params) {
     mesh.intensity.push_back(nearest.intensity);
     mesh.views.push_back(nearest.views);
   }
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  vtkCellArray* polys = out->GetPolys();
-  polys->InitTraversal();
-  while (polys->GetNextCell(ids)) {
-    if (ids->GetNumberOfIds() == 3) {
-      mesh.triangles.push_back({static_cast<std::uint32_t>(ids->GetId(0)),
-                                static_cast<std::uint32_t>(ids->GetId(1)),
-                                static_cast<std::uint32_t>(ids->GetId(2))});
-    }
-  }
+  mesh.triangles = trianglesOf(out);
   return mesh;
 }
 

@@ -41,31 +41,23 @@ Scene sceneFromPolyData(vtkPolyData* poly, float reflectivity, const std::string
                                             static_cast<float>(nn[2]))
                                 .normalized());
   }
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  vtkCellArray* polys = out->GetPolys();
-  polys->InitTraversal();
-  while (polys->GetNextCell(ids)) {
-    if (ids->GetNumberOfIds() != 3) {
-      continue;
-    }
-    scene.triangles.push_back({static_cast<std::uint32_t>(ids->GetId(0)),
-                               static_cast<std::uint32_t>(ids->GetId(1)),
-                               static_cast<std::uint32_t>(ids->GetId(2))});
-  }
+  scene.triangles = trianglesOf(out);
   scene.reflectivity.assign(scene.triangles.size(), reflectivity);
   return scene;
 }
 
-vtkSmartPointer<vtkPolyData> polyDataFromScene(const Scene& scene) {
+vtkSmartPointer<vtkPolyData> triangleMesh(
+    const std::vector<Eigen::Vector3f>& vertices,
+    const std::vector<std::array<std::uint32_t, 3>>& triangles) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(scene.vertices.size()));
-  for (std::size_t i = 0; i < scene.vertices.size(); ++i) {
-    const auto& v = scene.vertices[i];
+  points->SetNumberOfPoints(static_cast<vtkIdType>(vertices.size()));
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const auto& v = vertices[i];
     points->SetPoint(static_cast<vtkIdType>(i), v.x(), v.y(), v.z());
   }
   auto cells = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& t : scene.triangles) {
+  for (const auto& t : triangles) {
     const vtkIdType ids[3] = {t[0], t[1], t[2]};
     cells->InsertNextCell(3, ids);
   }
@@ -73,6 +65,25 @@ vtkSmartPointer<vtkPolyData> polyDataFromScene(const Scene& scene) {
   poly->SetPoints(points);
   poly->SetPolys(cells);
   return poly;
+}
+
+vtkSmartPointer<vtkPolyData> polyDataFromScene(const Scene& scene) {
+  return triangleMesh(scene.vertices, scene.triangles);
+}
+
+std::vector<std::array<std::uint32_t, 3>> trianglesOf(vtkPolyData* poly) {
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  vtkCellArray* polys = poly->GetPolys();
+  polys->InitTraversal();
+  while (polys->GetNextCell(ids)) {
+    if (ids->GetNumberOfIds() == 3) {
+      triangles.push_back({static_cast<std::uint32_t>(ids->GetId(0)),
+                           static_cast<std::uint32_t>(ids->GetId(1)),
+                           static_cast<std::uint32_t>(ids->GetId(2))});
+    }
+  }
+  return triangles;
 }
 
 }  // namespace sonarcarve

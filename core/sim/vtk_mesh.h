@@ -4,6 +4,10 @@
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <vector>
 
 #include "sim/scene.h"
 
@@ -12,5 +16,12 @@ namespace sonarcarve {
 /// Triangulates, computes smooth normals (split at sharp edges) and copies into a Scene.
 Scene sceneFromPolyData(vtkPolyData* poly, float reflectivity, const std::string& name);
 vtkSmartPointer<vtkPolyData> polyDataFromScene(const Scene& scene);
+
+/// Poly data of vertices and triangles (float points).
+vtkSmartPointer<vtkPolyData> triangleMesh(
+    const std::vector<Eigen::Vector3f>& vertices,
+    const std::vector<std::array<std::uint32_t, 3>>& triangles);
+/// The triangles of a poly data's polygons (other polygons are skipped).
+std::vector<std::array<std::uint32_t, 3>> trianglesOf(vtkPolyData* poly);
 
 }  // namespace sonarcarve
