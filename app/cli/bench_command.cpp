@@ -72,14 +72,9 @@ int benchSimulate(const BenchOptions& o) {
   TerminalProgress progress;
   for (std::size_t i = 0; i < frames && !progress.cancelled(); ++i) {
     // Spread the measured frames over the whole trajectory.
-    const NavSample& pose = trajectory.poses[i * trajectory.poses.size() / frames];
-    Eigen::Isometry3d T_world_vehicle = Eigen::Isometry3d::Identity();
-    T_world_vehicle.linear() = pose.q_world_vehicle.toRotationMatrix();
-    T_world_vehicle.translation() = pose.position_m;
+    const std::size_t frame = i * trajectory.poses.size() / frames;
     cv::Mat image;
-    render.ms.push_back(timeMs([&] {
-      image = simulator.render(T_world_vehicle * trajectory.mounting.T_vehicle_sonar());
-    }));
+    render.ms.push_back(timeMs([&] { image = simulator.render(trajectory.T_world_sonar(frame)); }));
     with_noise.ms.push_back(render.ms.back() + timeMs([&] { addNoise(image, noise, sonar, i); }));
     progress.report("bench simulate", i + 1, frames);
   }
@@ -123,14 +118,6 @@ double peakMemoryMb() {
   return 0.0;
 }
 
-Eigen::Isometry3d sonarPose(const Trajectory& trajectory, std::size_t i) {
-  const NavSample& pose = trajectory.poses[i];
-  Eigen::Isometry3d T_world_vehicle = Eigen::Isometry3d::Identity();
-  T_world_vehicle.linear() = pose.q_world_vehicle.toRotationMatrix();
-  T_world_vehicle.translation() = pose.position_m;
-  return T_world_vehicle * trajectory.mounting.T_vehicle_sonar();
-}
-
 // The whole demo mission in memory (no file I/O in the timings): the fast engine's map
 // update and occlusion resolution per frame, then the reference engine on a few frames.
 int benchCarve(const BenchOptions& o) {
@@ -155,7 +142,7 @@ int benchCarve(const BenchOptions& o) {
   const CarvingGeometry geometry(sonar, params);
   Eigen::AlignedBox3d bounds;
   for (std::size_t i = 0; i < frames; ++i) {
-    poses[i] = sonarPose(trajectory, i);
+    poses[i] = trajectory.T_world_sonar(i);
     images[i] = simulator.render(poses[i]);
     bounds.extend(geometry.frustumBounds(poses[i]));
   }

@@ -31,14 +31,9 @@ void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path) {
   // The carved voxels around them: the free space next to the structure.
   for (const std::size_t b : shell_blocks) {
     const float* v = map.values(b);
-    const Eigen::Vector3i base = (map.blockCoords(b) + map.firstBlock()) * VoxelMap::kBlockSide;
     for (int i = 0; i < VoxelMap::kBlockVoxels; ++i) {
       if (v[i] == 0.0f) {
-        tree.updateNode(
-            keyOf(base + Eigen::Vector3i(i % VoxelMap::kBlockSide,
-                                         (i / VoxelMap::kBlockSide) % VoxelMap::kBlockSide,
-                                         i / (VoxelMap::kBlockSide * VoxelMap::kBlockSide))),
-            false, true);
+        tree.updateNode(keyOf(map.voxelIndex(b, i)), false, true);
       }
     }
   }

@@ -119,12 +119,9 @@ void VoxelMap::forEachOccupied(const std::function<void(const Eigen::Vector3i&, 
     if (v == nullptr) {
       continue;
     }
-    const Eigen::Vector3i base = (blockCoords(b) + first_block_) * kBlockSide;
     for (int i = 0; i < kBlockVoxels; ++i) {
       if (v[i] > 0.0f && v[i] < kUnknown) {
-        f(base + Eigen::Vector3i(i % kBlockSide, (i / kBlockSide) % kBlockSide,
-                                 i / (kBlockSide * kBlockSide)),
-          v[i]);
+        f(voxelIndex(b, i), v[i]);
       }
     }
   }

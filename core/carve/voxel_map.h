@@ -54,6 +54,12 @@ class VoxelMap {
   /// Frame stamp of the last change of a block (0: never changed).
   std::uint32_t stamp(std::size_t block) const { return stamp_[block]; }
 
+  /// Global index of voxel `i` (0..511, x fastest) of block `block`.
+  Eigen::Vector3i voxelIndex(std::size_t block, int i) const {
+    return (blockCoords(block) + first_block_) * kBlockSide +
+           Eigen::Vector3i(i % kBlockSide, (i / kBlockSide) % kBlockSide,
+                           i / (kBlockSide * kBlockSide));
+  }
   /// World position of the centre of global voxel `voxel`.
   Eigen::Vector3d voxelCentre(const Eigen::Vector3i& voxel) const {
     return (voxel.cast<double>() + Eigen::Vector3d::Constant(0.5)) * voxel_size_m_;

@@ -18,8 +18,10 @@ struct PlyElement {
   std::uint64_t list_bytes = 0;   // lower bound for list properties (a triangle each)
 };
 
-std::uint64_t typeSize(const std::string& type) {
-  static const std::map<std::string, std::uint64_t> sizes = {
+}  // namespace
+
+int plyTypeSize(const std::string& type) {
+  static const std::map<std::string, int> sizes = {
       {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
       {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
       {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
@@ -27,9 +29,10 @@ std::uint64_t typeSize(const std::string& type) {
   return it == sizes.end() ? 0 : it->second;
 }
 
-}  // namespace
-
 void checkPlyFile(const std::filesystem::path& path) {
+  const auto bytesOf = [](const std::string& type) {
+    return static_cast<std::uint64_t>(plyTypeSize(type));
+  };
   const std::string file = path.string();
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -74,15 +77,15 @@ void checkPlyFile(const std::filesystem::path& path) {
       if (type == "list") {
         std::string count_type, item_type;
         words >> count_type >> item_type;
-        if (typeSize(count_type) == 0 || typeSize(item_type) == 0) {
+        if (bytesOf(count_type) == 0 || bytesOf(item_type) == 0) {
           fail("unknown list property types");
         }
-        elements.back().list_bytes += typeSize(count_type) + 3 * typeSize(item_type);
+        elements.back().list_bytes += bytesOf(count_type) + 3 * bytesOf(item_type);
       } else {
-        if (typeSize(type) == 0) {
+        if (bytesOf(type) == 0) {
           fail("unknown property type '" + type + "'");
         }
-        elements.back().fixed_bytes += typeSize(type);
+        elements.back().fixed_bytes += bytesOf(type);
       }
     } else if (keyword == "end_header") {
       ended = true;

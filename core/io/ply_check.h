@@ -4,9 +4,13 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 namespace sonarcarve {
 
 void checkPlyFile(const std::filesystem::path& path);
+
+/// Bytes of a PLY scalar type ("float", "uchar", "int32", ...), 0 for an unknown type.
+int plyTypeSize(const std::string& type);
 
 }  // namespace sonarcarve

@@ -18,22 +18,9 @@ struct Property {
   int size = 0;
 };
 
-int sizeOf(const std::string& type) {
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8")
-    return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16")
-    return 2;
-  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
-      type == "float32")
-    return 4;
-  if (type == "double" || type == "float64")
-    return 8;
-  return 0;
-}
-
 double decode(const char* bytes, const std::string& type, bool swap) {
   char b[8];
-  const int n = sizeOf(type);
+  const int n = plyTypeSize(type);
   for (int i = 0; i < n; ++i) {
     b[i] = swap ? bytes[n - 1 - i] : bytes[i];
   }
@@ -144,7 +131,7 @@ PointCloud readPointCloudPly(const std::filesystem::path& path) {
         throw Error(file, "line " + std::to_string(line_number), "list property on vertices");
       }
       words >> p.name;
-      p.size = sizeOf(p.type);
+      p.size = plyTypeSize(p.type);
       props.push_back(p);
     } else if (keyword == "end_header") {
       break;

@@ -39,14 +39,9 @@ MapUpdate changedBlocks(const VoxelMap& map, std::uint32_t since, std::size_t fr
     MapBlockUpdate block;
     block.block = b;
     if (const float* v = map.values(b)) {
-      const Eigen::Vector3i base = (map.blockCoords(b) + map.firstBlock()) * VoxelMap::kBlockSide;
       for (int i = 0; i < VoxelMap::kBlockVoxels; ++i) {
         if (v[i] > 0.0f && v[i] < VoxelMap::kUnknown) {
-          const Eigen::Vector3i voxel =
-              base + Eigen::Vector3i(i % VoxelMap::kBlockSide,
-                                     (i / VoxelMap::kBlockSide) % VoxelMap::kBlockSide,
-                                     i / (VoxelMap::kBlockSide * VoxelMap::kBlockSide));
-          block.points.push_back(map.voxelCentre(voxel).cast<float>());
+          block.points.push_back(map.voxelCentre(map.voxelIndex(b, i)).cast<float>());
           block.values.push_back(v[i]);
         }
       }

@@ -63,7 +63,6 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   }
   const RayCaster caster(request.scene);
   const SonarSimulator simulator(caster, request.sonar, request.imaging);
-  const Eigen::Isometry3d T_vehicle_sonar = trajectory.mounting.T_vehicle_sonar();
   VisibleSurface visible;
   MissionWriter writer(request.output,
                        request.scene.name + (request.empty_water ? " (empty water)" : "") + " / " +
@@ -76,14 +75,11 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
       break;
     }
     const NavSample& pose = trajectory.poses[i];
-    Eigen::Isometry3d T_world_vehicle = Eigen::Isometry3d::Identity();
-    T_world_vehicle.linear() = pose.q_world_vehicle.toRotationMatrix();
-    T_world_vehicle.translation() = pose.position_m;
     Frame frame{pose.time_s, request.sonar.id(), {}};
     if (request.empty_water) {
       frame.image = cv::Mat(request.sonar.rows(), request.sonar.cols(), CV_32F, cv::Scalar(0.0f));
     } else {
-      frame.image = simulator.render(T_world_vehicle * T_vehicle_sonar,
+      frame.image = simulator.render(trajectory.T_world_sonar(i),
                                      [&](const Eigen::Vector3f& p) { visible.add(p); });
     }
     addNoise(frame.image, request.noise, request.sonar, i);

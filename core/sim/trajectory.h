@@ -43,6 +43,11 @@ struct TrajectorySpec {
 struct Trajectory {
   std::vector<NavSample> poses;  ///< true vehicle poses, one per frame
   Mounting mounting;
+
+  /// The sonar's true pose at frame `frame`.
+  Eigen::Isometry3d T_world_sonar(std::size_t frame) const {
+    return poses[frame].T_world_vehicle() * mounting.T_vehicle_sonar();
+  }
 };
 
 /// Throws Error for an unknown kind, an unreadable CSV or a target the kind cannot cover.

@@ -42,12 +42,10 @@ Eigen::Isometry3d NavTrack::T_world_vehicle(double time_s) const {
   // First sample at or after the time; interpolate from the one before it.
   const auto after = std::lower_bound(samples_.begin(), samples_.end(), time_s,
                                       [](const NavSample& s, double t) { return s.time_s < t; });
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   if (after->time_s == time_s || after == samples_.begin()) {
-    pose.linear() = after->q_world_vehicle.toRotationMatrix();
-    pose.translation() = after->position_m;
-    return pose;
+    return after->T_world_vehicle();
   }
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   const NavSample& a = *(after - 1);
   const NavSample& b = *after;
   const double u = (time_s - a.time_s) / (b.time_s - a.time_s);

@@ -13,6 +13,14 @@ struct NavSample {
   double time_s = 0.0;
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< vehicle origin, world NED
   Eigen::Quaterniond q_world_vehicle = Eigen::Quaterniond::Identity();
+
+  /// The sample as a transform from the vehicle frame to the world.
+  Eigen::Isometry3d T_world_vehicle() const {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.linear() = q_world_vehicle.toRotationMatrix();
+    pose.translation() = position_m;
+    return pose;
+  }
 };
 
 class NavTrack {

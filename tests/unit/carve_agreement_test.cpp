@@ -35,11 +35,8 @@ TEST(CarveAgreement, FastAndReferenceEnginesAgreeOnOccupiedVoxels) {
   FastCarver fast(map, sonar, params);
   ReferenceCarver reference(sonar, params);
   std::uint32_t stamp = 0;
-  for (const NavSample& pose : trajectory.poses) {
-    Eigen::Isometry3d T_world_vehicle = Eigen::Isometry3d::Identity();
-    T_world_vehicle.linear() = pose.q_world_vehicle.toRotationMatrix();
-    T_world_vehicle.translation() = pose.position_m;
-    const Eigen::Isometry3d T_world_sonar = T_world_vehicle * trajectory.mounting.T_vehicle_sonar();
+  for (std::size_t i = 0; i < trajectory.poses.size(); ++i) {
+    const Eigen::Isometry3d T_world_sonar = trajectory.T_world_sonar(i);
     if (std::abs(T_world_sonar.translation().z() - 10.8) > 0.8) {
       continue;
     }

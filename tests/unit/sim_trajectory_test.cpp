@@ -16,20 +16,13 @@ InspectionTarget riserLike() {
   return {Eigen::Vector3d(1.0, 2.0, 15.0), 10.0, 20.0, 20.0};
 }
 
-Eigen::Isometry3d sonarPose(const Trajectory& t, std::size_t i) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = t.poses[i].q_world_vehicle.toRotationMatrix();
-  T.translation() = t.poses[i].position_m;
-  return T * t.mounting.T_vehicle_sonar();
-}
-
 TEST(Trajectory, VerticalInspectionFacesTheAxisAtTheStandoffInEvenSteps) {
   TrajectorySpec spec;
   const Trajectory t = makeTrajectory(spec, riserLike());
   // From 1 m above the top (9 m) to 1.8 m above the seabed (18.2 m), every 10 cm.
   ASSERT_EQ(t.poses.size(), 93u);
   for (std::size_t i = 0; i < t.poses.size(); ++i) {
-    const Eigen::Isometry3d T = sonarPose(t, i);
+    const Eigen::Isometry3d T = t.T_world_sonar(i);
     EXPECT_NEAR(T.translation().z(), 9.0 + 0.1 * static_cast<double>(i), 1e-9);
     const Eigen::Vector3d to_axis(1.0 - T.translation().x(), 2.0 - T.translation().y(), 0.0);
     EXPECT_NEAR(to_axis.norm(), spec.standoff_m, 1e-9);
@@ -46,7 +39,7 @@ TEST(Trajectory, OrbitCirclesTheAxisFacingIt) {
   const Trajectory t = makeTrajectory(spec, riserLike());
   ASSERT_GT(t.poses.size(), 200u);
   for (std::size_t i = 0; i < t.poses.size(); i += 17) {
-    const Eigen::Isometry3d T = sonarPose(t, i);
+    const Eigen::Isometry3d T = t.T_world_sonar(i);
     const Eigen::Vector3d to_axis(1.0 - T.translation().x(), 2.0 - T.translation().y(), 0.0);
     EXPECT_NEAR(to_axis.norm(), spec.standoff_m, 1e-6);
     EXPECT_GT((T.linear() * Eigen::Vector3d::UnitX()).dot(to_axis.normalized()), 0.9999);
@@ -58,7 +51,7 @@ TEST(Trajectory, LawnmowerLooksDownAtTheSeabedFromItsAltitude) {
   spec.kind = "lawnmower";
   const Trajectory t = makeTrajectory(spec, riserLike());
   ASSERT_GT(t.poses.size(), 100u);
-  const Eigen::Isometry3d T = sonarPose(t, 10);
+  const Eigen::Isometry3d T = t.T_world_sonar(10);
   EXPECT_NEAR(T.translation().z(), 20.0 - spec.altitude_m, 1e-9);  // the sonar's altitude
   const Eigen::Vector3d boresight = T.linear() * Eigen::Vector3d::UnitX();
   EXPECT_NEAR(boresight.z(), std::sin(degToRad(30)), 1e-9);  // 30 degrees down (+z)
