@@ -1,6 +1,8 @@
 // End-to-end: sonarcarve-cli simulate and frame, as a user runs them.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/mission.h"
@@ -58,6 +60,34 @@ TEST(CliFrame, DrawsPolarAndFanPictures) {
   EXPECT_EQ(f.cols, 900);
   EXPECT_GT(f.rows, 100);
   EXPECT_NE(runCli("frame " + quoted(test::exampleMission()) + " --index 99").exit_code, 0);
+}
+
+}  // namespace
+}  // namespace sonarcarve
+
+namespace sonarcarve {
+namespace {
+
+// Ctrl-C as a user presses it: SIGINT to a running simulate stops it after the current frame,
+// with a valid mission of the frames done and exit code 130.
+TEST(CliSimulate, CtrlCStopsCleanlyWithAValidShorterMission) {
+  test::ScratchDir dir;
+  const auto out = dir.path() / "riser";
+  const auto script = dir.path() / "interrupt.sh";
+  test::writeText(script, std::string("'") + SONARCARVE_CLI + "' simulate --scene riser --out " +
+                              test::quoted(out) +
+                              " > /dev/null 2>&1 &\npid=$!\n"
+                              // Interrupt once the third frame is on disk (at most 20 s).
+                              "for i in $(seq 400); do [ -f " +
+                              test::quoted(out / "frames" / "000002.png") +
+                              " ] && break; sleep 0.05; done\nkill -INT $pid\nwait $pid\n");
+  const int status = std::system(("bash " + test::quoted(script)).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const Mission mission = readMission(out);
+  EXPECT_GT(mission.frames.size(), 0u);
+  EXPECT_LT(mission.frames.size(), 98u);  // the whole inspection has 98 frames
+  EXPECT_TRUE(checkFrames(mission).empty());
 }
 
 }  // namespace
