@@ -58,7 +58,7 @@ int benchSimulate(const BenchOptions& o) {
   const Scene scene = makeDemoScene(o.scene);
   const SonarModel sonar = paperSonar();
   TrajectorySpec spec;
-  spec.kind = o.scene == "seabed-objects" ? "lawnmower" : "vertical";
+  spec.kind = usualTrajectory(o.scene);
   const Trajectory trajectory = makeTrajectory(spec, scene.target);
   Timings build;
   std::unique_ptr<RayCaster> caster;
@@ -124,7 +124,7 @@ int benchCarve(const BenchOptions& o) {
   const Scene scene = makeDemoScene(o.scene);
   const SonarModel sonar = paperSonar();
   TrajectorySpec spec;
-  spec.kind = o.scene == "seabed-objects" ? "lawnmower" : "vertical";
+  spec.kind = usualTrajectory(o.scene);
   const Trajectory trajectory = makeTrajectory(spec, scene.target);
   const RayCaster caster(scene);
   const SonarSimulator simulator(caster, sonar, ImagingSettings{});

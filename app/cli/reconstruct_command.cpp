@@ -132,19 +132,17 @@ int runReconstruct(const ReconstructOptions& o) {
     for (const auto& p : result.surface) {
       points.push_back(p.position_m);
     }
+    // Ground truth read once, for the points and for the mesh.
+    const Scene truth_mesh = loadSceneMesh(truth);
     const auto visible_file = mission.folder / "visible_points.ply";
-    const EvaluationResult eval =
-        evaluate(points, loadSceneMesh(truth),
-                 std::filesystem::exists(visible_file) ? readPointsPly(visible_file)
-                                                       : std::vector<Eigen::Vector3f>{});
-    report["evaluation"] = nlohmann::json::parse(eval.toJson());
+    const std::vector<Eigen::Vector3f> visible = std::filesystem::exists(visible_file)
+                                                     ? readPointsPly(visible_file)
+                                                     : std::vector<Eigen::Vector3f>{};
+    report["evaluation"] = nlohmann::json::parse(evaluate(points, truth_mesh, visible).toJson());
     if (!result.mesh.vertices.empty()) {
       // Mesh accuracy: distance from the mesh vertices to the ground truth.
-      const EvaluationResult mesh_eval =
-          evaluate(result.mesh.vertices, loadSceneMesh(truth),
-                   std::filesystem::exists(visible_file) ? readPointsPly(visible_file)
-                                                         : std::vector<Eigen::Vector3f>{});
-      report["mesh_evaluation"] = nlohmann::json::parse(mesh_eval.toJson());
+      report["mesh_evaluation"] =
+          nlohmann::json::parse(evaluate(result.mesh.vertices, truth_mesh, visible).toJson());
     }
   }
   writeFileAtomically(out / "report.json", report.dump(2) + "\n");

@@ -47,9 +47,7 @@ int runSimulate(const SimulateOptions& o) {
     throw Error(out.string(), "", "already holds a mission; choose another --out or add --force");
   }
   TrajectorySpec trajectory;
-  trajectory.kind = o.trajectory == "auto"
-                        ? (o.scene == "seabed-objects" ? "lawnmower" : "vertical")
-                        : o.trajectory;
+  trajectory.kind = o.trajectory == "auto" ? usualTrajectory(o.scene) : o.trajectory;
   trajectory.standoff_m = o.standoff_m;
   trajectory.step_m = o.step_m;
   ImagingSettings imaging;

@@ -135,6 +135,10 @@ bool isDemoScene(const std::string& name) {
   return false;
 }
 
+std::string usualTrajectory(const std::string& scene) {
+  return scene == "seabed-objects" ? "lawnmower" : "vertical";
+}
+
 Scene makeDemoScene(const std::string& name) {
   if (name == "riser") {
     return riser();

@@ -16,5 +16,8 @@ std::vector<std::string> demoSceneNames();
 bool isDemoScene(const std::string& name);
 /// Throws Error for an unknown name.
 Scene makeDemoScene(const std::string& name);
+/// The trajectory a scene is usually inspected with: lawnmower over seabed-objects,
+/// vertical otherwise (a loaded mesh included).
+std::string usualTrajectory(const std::string& scene);
 
 }  // namespace sonarcarve
