@@ -9,17 +9,6 @@
 #include "common/error.h"
 
 namespace sonarcarve {
-namespace {
-
-struct PlyElement {
-  std::string name;
-  std::uint64_t count = 0;
-  std::uint64_t fixed_bytes = 0;  // bytes of the scalar properties
-  std::uint64_t list_bytes = 0;   // lower bound for list properties (a triangle each)
-};
-
-}  // namespace
-
 int plyTypeSize(const std::string& type) {
   static const std::map<std::string, int> sizes = {
       {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
@@ -29,7 +18,7 @@ int plyTypeSize(const std::string& type) {
   return it == sizes.end() ? 0 : it->second;
 }
 
-void checkPlyFile(const std::filesystem::path& path) {
+PlyHeader checkPlyFile(const std::filesystem::path& path) {
   const auto bytesOf = [](const std::string& type) {
     return static_cast<std::uint64_t>(plyTypeSize(type));
   };
@@ -46,8 +35,9 @@ void checkPlyFile(const std::filesystem::path& path) {
   if (!std::getline(in, line) || (++line_number, line.rfind("ply", 0) != 0)) {
     throw Error(file, "byte 0", "not a PLY file: expected 'ply' on the first line");
   }
-  std::string format;
-  std::vector<PlyElement> elements;
+  PlyHeader header;
+  std::string& format = header.format;
+  std::vector<PlyElement>& elements = header.elements;
   bool ended = false;
   while (std::getline(in, line)) {
     ++line_number;
@@ -77,15 +67,19 @@ void checkPlyFile(const std::filesystem::path& path) {
       if (type == "list") {
         std::string count_type, item_type;
         words >> count_type >> item_type;
+        std::string name;
+        words >> name;
         if (bytesOf(count_type) == 0 || bytesOf(item_type) == 0) {
           fail("unknown list property types");
         }
-        elements.back().list_bytes += bytesOf(count_type) + 3 * bytesOf(item_type);
+        elements.back().properties.push_back({name, item_type, true, count_type});
       } else {
+        std::string name;
+        words >> name;
         if (bytesOf(type) == 0) {
           fail("unknown property type '" + type + "'");
         }
-        elements.back().fixed_bytes += bytesOf(type);
+        elements.back().properties.push_back({name, type, false, ""});
       }
     } else if (keyword == "end_header") {
       ended = true;
@@ -102,6 +96,7 @@ void checkPlyFile(const std::filesystem::path& path) {
     throw Error(file, "", "PLY header has no 'format' line");
   }
   const auto body_start = static_cast<std::uint64_t>(in.tellg());
+  header.body_offset = body_start;
   const std::uint64_t size = std::filesystem::file_size(path);
   if (format == "ascii") {
     std::uint64_t needed = 0;
@@ -119,17 +114,23 @@ void checkPlyFile(const std::filesystem::path& path) {
                   "truncated PLY: expected " + std::to_string(needed) + " element lines, found " +
                       std::to_string(lines));
     }
-    return;
+    return header;
   }
+  // Lower bound of the body's size: lists counted as triangles (a count and three items).
   std::uint64_t needed = 0;
   for (const auto& e : elements) {
-    needed += e.count * (e.fixed_bytes + e.list_bytes);
+    std::uint64_t record = 0;
+    for (const auto& p : e.properties) {
+      record += p.list ? bytesOf(p.count_type) + 3 * bytesOf(p.type) : bytesOf(p.type);
+    }
+    needed += e.count * record;
   }
   if (size < body_start + needed) {
     throw Error(file, "byte " + std::to_string(size),
                 "truncated PLY: the header declares at least " + std::to_string(needed) +
                     " bytes of data after byte " + std::to_string(body_start));
   }
+  return header;
 }
 
 }  // namespace sonarcarve

@@ -3,12 +3,34 @@
 // naming the file, the line or byte offset, and what was expected.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace sonarcarve {
 
-void checkPlyFile(const std::filesystem::path& path);
+struct PlyProperty {
+  std::string name;
+  std::string type;  ///< scalar type, or the item type of a list
+  bool list = false;
+  std::string count_type;  ///< lists: the type of the item count
+};
+
+struct PlyElement {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+struct PlyHeader {
+  std::string format;  ///< ascii | binary_little_endian | binary_big_endian
+  std::vector<PlyElement> elements;
+  std::uint64_t body_offset = 0;  ///< byte where the data starts
+};
+
+/// Returns the parsed header of a file that passed the checks.
+PlyHeader checkPlyFile(const std::filesystem::path& path);
 
 /// Bytes of a PLY scalar type ("float", "uchar", "int32", ...), 0 for an unknown type.
 int plyTypeSize(const std::string& type);

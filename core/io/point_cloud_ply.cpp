@@ -97,46 +97,21 @@ PointCloud readPointCloudPly(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path)) {
     throw Error(file, "", "point cloud not found");
   }
-  checkPlyFile(path);  // header well formed and body long enough
-  std::ifstream in(path, std::ios::binary);
-  std::string line, format;
-  std::vector<Property> props;
-  std::size_t count = 0;
-  bool in_vertex = false, seen_vertex = false;
-  int line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (!line.empty() && line.back() == '\r')
-      line.pop_back();
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    if (keyword == "format") {
-      words >> format;
-    } else if (keyword == "element") {
-      std::string name;
-      words >> name;
-      in_vertex = name == "vertex";
-      if (in_vertex) {
-        words >> count;
-        seen_vertex = true;
-      } else if (!seen_vertex) {
-        throw Error(file, "line " + std::to_string(line_number),
-                    "expected the vertex element first");
-      }
-    } else if (keyword == "property" && in_vertex) {
-      Property p;
-      words >> p.type;
-      if (p.type == "list") {
-        throw Error(file, "line " + std::to_string(line_number), "list property on vertices");
-      }
-      words >> p.name;
-      p.size = plyTypeSize(p.type);
-      props.push_back(p);
-    } else if (keyword == "end_header") {
-      break;
-    }
+  const PlyHeader header = checkPlyFile(path);  // well formed, body long enough
+  if (header.elements.empty() || header.elements.front().name != "vertex") {
+    throw Error(file, "header", "expected the vertex element first");
   }
+  const std::string& format = header.format;
+  const auto count = static_cast<std::size_t>(header.elements.front().count);
+  std::vector<Property> props;
+  for (const PlyProperty& p : header.elements.front().properties) {
+    if (p.list) {
+      throw Error(file, "header", "list property on vertices");
+    }
+    props.push_back({p.name, p.type, plyTypeSize(p.type)});
+  }
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(header.body_offset));
   int ix = -1, iy = -1, iz = -1;
   for (std::size_t k = 0; k < props.size(); ++k) {
     if (props[k].name == "x")
@@ -146,7 +121,7 @@ PointCloud readPointCloudPly(const std::filesystem::path& path) {
     if (props[k].name == "z")
       iz = static_cast<int>(k);
   }
-  if (!seen_vertex || ix < 0 || iy < 0 || iz < 0) {
+  if (ix < 0 || iy < 0 || iz < 0) {
     throw Error(file, "header", "expected a vertex element with x, y and z");
   }
   PointCloud cloud;
