@@ -11,7 +11,7 @@ packages=(
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libvtk9-dev
   # GUI
-  qt6-base-dev libgl-dev libgl1-mesa-dri
+  qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools assimp-utils
 )

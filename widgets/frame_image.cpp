@@ -1,29 +1,37 @@
 #include "frame_image.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace sonarcarve::widgets {
-namespace {
-
-QRgb colourOf(float u, ColourMap map) {
-  const int v = static_cast<int>(std::clamp(u, 0.0f, 1.0f) * 255.0f + 0.5f);
-  if (map == ColourMap::Grey) {
-    return qRgb(v, v, v);
+DisplayRange displayRange(const cv::Mat& image) {
+  if (image.empty()) {
+    return {};
   }
-  // Copper: black -> orange -> pale, the classic sonar look.
-  return qRgb(std::min(255, v * 5 / 4), v * 4 / 5, v / 2);
+  std::vector<float> values(image.begin<float>(), image.end<float>());
+  const auto at = [&](double q) {
+    const auto it =
+        values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), it, values.end());
+    return *it;
+  };
+  DisplayRange range;
+  range.low = at(0.01);
+  range.high = std::max(at(0.998), range.low + 1.0f);
+  return range;
 }
-
-}  // namespace
 
 QImage polarImageToQImage(const cv::Mat& image, float low, float high, ColourMap map) {
   QImage out(image.cols, image.rows, QImage::Format_RGB32);
   const float span = high > low ? high - low : 1.0f;
+  const ColourTable& colours = coloursOf(map);
   for (int r = 0; r < image.rows; ++r) {
     const float* in = image.ptr<float>(r);
     auto* line = reinterpret_cast<QRgb*>(out.scanLine(image.rows - 1 - r));
     for (int c = 0; c < image.cols; ++c) {
-      line[c] = colourOf((in[c] - low) / span, map);
+      const auto i =
+          static_cast<std::size_t>(std::clamp((in[c] - low) / span, 0.0f, 1.0f) * 255.0f + 0.5f);
+      line[c] = qRgb(colours[i][0], colours[i][1], colours[i][2]);
     }
   }
   return out;

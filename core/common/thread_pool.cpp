@@ -76,6 +76,7 @@ void ThreadPool::parallelFor(std::size_t count, std::size_t grain,
     body(0, count);
     return;
   }
+  const std::lock_guard call_lock(call_mutex_);
   {
     std::lock_guard lock(mutex_);
     body_ = &body;

@@ -35,6 +35,7 @@ class ThreadPool {
   void runChunks();
 
   std::vector<std::thread> workers_;
+  std::mutex call_mutex_;  // held for a whole parallelFor: one loop at a time
   std::mutex mutex_;
   std::condition_variable wake_;
   std::condition_variable done_;

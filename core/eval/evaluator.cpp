@@ -27,27 +27,6 @@ double quantile(std::vector<float> values, double q) {
   return *it;
 }
 
-std::vector<float> distancesToMesh(const std::vector<Eigen::Vector3f>& points, const Scene& mesh) {
-  auto poly = polyDataFromScene(mesh);
-  auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-  locator->SetDataSet(poly);
-  locator->BuildLocator();
-  std::vector<float> d(points.size());
-  ThreadPool::shared().parallelFor(points.size(), 1024, [&](std::size_t b, std::size_t e) {
-    auto cell = vtkSmartPointer<vtkGenericCell>::New();
-    for (std::size_t i = b; i < e; ++i) {
-      double x[3] = {points[i].x(), points[i].y(), points[i].z()};
-      double closest[3];
-      vtkIdType cell_id = -1;
-      int sub_id = 0;
-      double dist2 = 0.0;
-      locator->FindClosestPoint(x, closest, cell, cell_id, sub_id, dist2);
-      d[i] = static_cast<float>(std::sqrt(dist2));
-    }
-  });
-  return d;
-}
-
 std::vector<float> distancesToPoints(const std::vector<Eigen::Vector3f>& queries,
                                      const std::vector<Eigen::Vector3f>& cloud) {
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -88,7 +67,49 @@ double fractionWithin(const std::vector<float>& v, double tau) {
   return static_cast<double>(n) / static_cast<double>(v.size());
 }
 
+std::vector<float> distancesToMesh(const std::vector<Eigen::Vector3f>& points, const Scene& mesh) {
+  return MeshDistance(mesh).distances(points);
+}
+
 }  // namespace
+
+struct MeshDistance::Locator {
+  vtkSmartPointer<vtkPolyData> poly;
+  vtkSmartPointer<vtkStaticCellLocator> cells;
+};
+
+MeshDistance::MeshDistance(const Scene& mesh) : locator_(std::make_unique<Locator>()) {
+  locator_->poly = polyDataFromScene(mesh);
+  locator_->cells = vtkSmartPointer<vtkStaticCellLocator>::New();
+  locator_->cells->SetDataSet(locator_->poly);
+  locator_->cells->BuildLocator();
+}
+
+MeshDistance::~MeshDistance() = default;
+
+std::vector<float> MeshDistance::distances(const std::vector<Eigen::Vector3f>& points,
+                                           double max_distance_m) const {
+  std::vector<float> d(points.size());
+  const bool bounded = std::isfinite(max_distance_m);
+  ThreadPool::shared().parallelFor(points.size(), 1024, [&](std::size_t b, std::size_t e) {
+    auto cell = vtkSmartPointer<vtkGenericCell>::New();
+    for (std::size_t i = b; i < e; ++i) {
+      double x[3] = {points[i].x(), points[i].y(), points[i].z()};
+      double closest[3];
+      vtkIdType cell_id = -1;
+      int sub_id = 0;
+      double dist2 = 0.0;
+      if (!bounded) {
+        locator_->cells->FindClosestPoint(x, closest, cell, cell_id, sub_id, dist2);
+      } else if (locator_->cells->FindClosestPointWithinRadius(x, max_distance_m, closest, cell,
+                                                               cell_id, sub_id, dist2) == 0) {
+        dist2 = max_distance_m * max_distance_m;
+      }
+      d[i] = static_cast<float>(std::sqrt(dist2));
+    }
+  });
+  return d;
+}
 
 std::vector<Eigen::Vector3f> sampleSurface(const Scene& mesh, double spacing_m) {
   std::vector<Eigen::Vector3f> points;

@@ -12,6 +12,9 @@
 #include <string>
 #include <vector>
 
+#include <limits>
+#include <memory>
+
 #include "sim/scene.h"
 
 namespace sonarcarve {
@@ -31,6 +34,25 @@ struct EvaluationResult {
   std::vector<float> point_errors_m;  ///< per reconstructed point
 
   std::string toJson() const;
+};
+
+/// Distances from points to a mesh, with the mesh's locator built once (for viewers that
+/// colour a growing map by its error). distances() is thread safe; it uses the shared pool.
+class MeshDistance {
+ public:
+  explicit MeshDistance(const Scene& mesh);
+  ~MeshDistance();
+  MeshDistance(const MeshDistance&) = delete;
+  MeshDistance& operator=(const MeshDistance&) = delete;
+  /// Distances, metres; with a finite `max_distance_m` farther points get that value (much
+  /// faster for points far from the mesh, enough for colouring).
+  std::vector<float> distances(
+      const std::vector<Eigen::Vector3f>& points,
+      double max_distance_m = std::numeric_limits<double>::infinity()) const;
+
+ private:
+  struct Locator;  // VTK stays out of core's public headers
+  std::unique_ptr<Locator> locator_;
 };
 
 /// `reference_points` may be empty: the mesh is then sampled every 1 cm.

@@ -19,6 +19,20 @@ YAML::Node YamlFields::load() const {
   } catch (const YAML::Exception& e) {
     throw Error(file_, linePlace(e.mark.line + 1), "not valid YAML: " + e.msg);
   }
+  return mapping(root);
+}
+
+YAML::Node YamlFields::parse(const std::string& text) const {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw Error(file_, linePlace(e.mark.line + 1), "not valid YAML: " + e.msg);
+  }
+  return mapping(root);
+}
+
+YAML::Node YamlFields::mapping(const YAML::Node& root) const {
   if (!root.IsMap()) {
     throw Error(file_, "", "expected a YAML mapping of keys (is the file empty?)");
   }

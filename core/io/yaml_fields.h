@@ -14,6 +14,8 @@ class YamlFields {
 
   /// Parses a whole file; throws Error if it is missing, empty or not valid YAML.
   YAML::Node load() const;
+  /// The same for YAML text embedded in the file (errors still name the file).
+  YAML::Node parse(const std::string& text) const;
 
   /// Child `key` of the mapping `node` (whose dotted name is `path`); throws if missing.
   YAML::Node child(const YAML::Node& node, const std::string& path, const std::string& key) const;
@@ -29,6 +31,7 @@ class YamlFields {
                          const std::string& expected) const;
 
  private:
+  YAML::Node mapping(const YAML::Node& root) const;
   std::string file_;
 };
 

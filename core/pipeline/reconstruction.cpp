@@ -70,6 +70,9 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
                                  std::size_t update_every) {
   params.validate();
   const auto t_start = Clock::now();
+  const SonarModel sonar = params.vertical_aperture_rad > 0.0
+                               ? mission.sonar.withVerticalAperture(params.vertical_aperture_rad)
+                               : mission.sonar;
   ReconstructionResult result;
   const Eigen::Isometry3d T_vehicle_sonar = mission.mounting.T_vehicle_sonar();
   const auto skip = [&](std::size_t index, const std::string& why) {
@@ -95,7 +98,7 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   }
 
   // The map covers what the frames can see, within the region of interest.
-  const CarvingGeometry geometry(mission.sonar, params.carve);
+  const CarvingGeometry geometry(sonar, params.carve);
   Eigen::AlignedBox3d bounds;
   for (const PosedFrame& f : posed) {
     bounds.extend(geometry.frustumBounds(f.T_world_sonar));
@@ -113,7 +116,7 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   if (!params.noise_model.empty()) {
     noise_model = std::make_shared<const NoiseModel>(NoiseModel::load(params.noise_model));
   }
-  const Detector detector(params.detector, noise_model, mission.sonar);
+  const Detector detector(params.detector, noise_model, sonar);
   if (detector.params().mode == "probability") {
     carve.fusion = CarveParams::Fusion::LogOdds;
     carve.intensity_threshold = 0.0;
@@ -131,10 +134,10 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   std::unique_ptr<ReferenceCarver> reference;
   std::unique_ptr<FastCarver> fast;
   if (params.engine == "reference") {
-    reference = std::make_unique<ReferenceCarver>(mission.sonar, carve);
+    reference = std::make_unique<ReferenceCarver>(sonar, carve);
   } else {
     result.map = std::make_unique<VoxelMap>(carve.voxel_size_m, bounds);
-    fast = std::make_unique<FastCarver>(*result.map, mission.sonar, carve);
+    fast = std::make_unique<FastCarver>(*result.map, sonar, carve);
   }
   std::uint32_t last_update = 0;
   for (std::size_t n = 0; n < posed.size(); ++n) {
@@ -200,14 +203,14 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   // Occlusion-aware second carving: each frame carves only what it can see past the first
   // carving's surfaces, so shadowed surfaces keep the returns of the views that saw them.
   if (fast && params.occlusion_aware_carving && !result.cancelled) {
-    const OcclusionResolver first_surface(occupied, values, mission.sonar, carve);
+    const OcclusionResolver first_surface(occupied, values, sonar, carve);
     auto refined = std::make_unique<VoxelMap>(carve.voxel_size_m, bounds);
-    FastCarver refine(*refined, mission.sonar, carve);
+    FastCarver refine(*refined, sonar, carve);
     VisibilityLimit limit;
     limit.elevation_bins = first_surface.elevationBins();
     limit.elevation_step_rad = carve.elevation_step_rad;
     // The surface voxel itself and the range bin it falls in stay observable.
-    limit.margin_m = std::sqrt(3.0) * carve.voxel_size_m + mission.sonar.range().resolution_m;
+    limit.margin_m = std::sqrt(3.0) * carve.voxel_size_m + sonar.range().resolution_m;
     for (std::size_t n = 0; n < used.size() && !progress.cancelled(); ++n) {
       Frame frame;
       try {
@@ -236,7 +239,7 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
 
   // Occlusion resolution: frames in parallel, cancellable between frames.
   const auto t_occlusion = Clock::now();
-  OcclusionResolver resolver(occupied, values, mission.sonar, carve);
+  OcclusionResolver resolver(occupied, values, sonar, carve);
   ThreadPool::shared().parallelFor(used.size(), 4, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       resolver.countObservations(used[i].T_world_sonar);

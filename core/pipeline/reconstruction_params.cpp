@@ -8,9 +8,11 @@
 
 namespace sonarcarve {
 
-ReconstructionParams ReconstructionParams::fromYamlFile(const std::string& path) {
-  const YamlFields f(path);
-  const YAML::Node root = f.load();
+namespace {
+
+// `path` names the document in errors and anchors a relative noise model path.
+ReconstructionParams paramsFromYaml(const YAML::Node& root, const YamlFields& f,
+                                    const std::string& path) {
   ReconstructionParams p;
   if (root["engine"]) {
     p.engine = f.text(root["engine"], "engine");
@@ -27,6 +29,10 @@ ReconstructionParams ReconstructionParams::fromYamlFile(const std::string& path)
   if (root["elevation_step_deg"]) {
     p.carve.elevation_step_rad =
         degToRad(f.positive(root["elevation_step_deg"], "elevation_step_deg"));
+  }
+  if (root["vertical_aperture_deg"]) {
+    p.vertical_aperture_rad =
+        degToRad(f.number(root["vertical_aperture_deg"], "vertical_aperture_deg"));
   }
   if (root["range_min_m"]) {
     p.carve.range_min_m = f.number(root["range_min_m"], "range_min_m");
@@ -131,6 +137,19 @@ ReconstructionParams ReconstructionParams::fromYamlFile(const std::string& path)
   return p;
 }
 
+}  // namespace
+
+ReconstructionParams ReconstructionParams::fromYamlFile(const std::string& path) {
+  const YamlFields f(path);
+  return paramsFromYaml(f.load(), f, path);
+}
+
+ReconstructionParams ReconstructionParams::fromYamlText(const std::string& text,
+                                                        const std::string& source) {
+  const YamlFields f(source);
+  return paramsFromYaml(f.parse(text), f, source);
+}
+
 void ReconstructionParams::validate() const {
   if (engine != "fast" && engine != "reference") {
     throw Error("parameters", "engine", "expected 'fast' or 'reference'");
@@ -144,6 +163,10 @@ void ReconstructionParams::validate() const {
   if (carve.range_min_m < 0.0 || carve.range_max_m < 0.0 ||
       (carve.range_max_m > 0.0 && carve.range_max_m <= carve.range_min_m)) {
     throw Error("parameters", "range_min_m/range_max_m", "expected 0 <= min < max (0 = sonar's)");
+  }
+  if (!(vertical_aperture_rad >= 0.0) || vertical_aperture_rad >= degToRad(180.0)) {
+    throw Error("parameters", "vertical_aperture_deg",
+                "expected 0 (the sonar's own) or an aperture below 180 degrees");
   }
   detector.validate();
   mesh.validate();
@@ -164,7 +187,8 @@ std::string ReconstructionParams::toYaml() const {
       << "intensity_threshold: " << shortestNumber(carve.intensity_threshold) << "\n"
       << "elevation_step_deg: " << shortestDegrees(carve.elevation_step_rad) << "\n"
       << "range_min_m: " << shortestNumber(carve.range_min_m) << "\n"
-      << "range_max_m: " << shortestNumber(carve.range_max_m) << "\n";
+      << "range_max_m: " << shortestNumber(carve.range_max_m) << "\n"
+      << "vertical_aperture_deg: " << shortestDegrees(vertical_aperture_rad) << "\n";
   if (carve.region) {
     const auto& lo = carve.region->min();
     const auto& hi = carve.region->max();

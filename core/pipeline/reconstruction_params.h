@@ -5,7 +5,7 @@
 //   voxel_size_m, intensity_threshold, elevation_step_deg, range_min_m, range_max_m
 //   region: {min_m: [n, e, d], max_m: [n, e, d]}     (optional)
 //   frames: {first: 0, last: -1, stride: 1}          (last -1 = to the end)
-//   min_views, occlusion_aware_carving
+//   min_views, occlusion_aware_carving, vertical_aperture_deg (0 = the sonar's own)
 //   detector: {mode: none|ztest|cfar|probability, z, cfar_guard, cfar_train, cfar_pfa,
 //              arc_prior, carve_log_odds, smoothing}
 //   noise_model: PATH                                (relative to the YAML file's folder)
@@ -35,6 +35,9 @@ struct ReconstructionParams {
   long last_frame = -1;  ///< exclusive; -1 means to the end
   std::size_t stride = 1;
   std::uint32_t min_views = kDefaultMinViews;
+  /// Vertical aperture used for carving, radians; 0 = the sonar model's own. Analysts
+  /// narrow it when the data sheet's -3 dB aperture overstates what returns energy.
+  double vertical_aperture_rad = 0.0;
   /// Fast engine, experimental: carve a second time, letting each frame update only the
   /// voxels it can see (not hidden behind the first carving's surface), so that surfaces
   /// shadowed from some views are not carved away by them. On the riser demo it gained 0.7 %
@@ -48,6 +51,9 @@ struct ReconstructionParams {
 
   /// Throws Error naming the file, line and key on a bad value; absent keys keep defaults.
   static ReconstructionParams fromYamlFile(const std::string& path);
+  /// The same from YAML text embedded in another file (a GUI session); `source` names that
+  /// file in errors and anchors a relative noise model path.
+  static ReconstructionParams fromYamlText(const std::string& text, const std::string& source);
   std::string toYaml() const;
   /// Throws Error if a value is out of range.
   void validate() const;

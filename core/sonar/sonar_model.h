@@ -46,6 +46,10 @@ class SonarModel {
   const BearingTable& bearings() const { return bearings_; }
   const BeamPattern& beamPattern() const { return beam_pattern_; }
   double verticalAperture() const { return beam_pattern_.aperture(); }
+  /// The same sonar with another vertical aperture (radians).
+  SonarModel withVerticalAperture(double vertical_aperture_rad) const {
+    return SonarModel(id_, range_, bearings_, vertical_aperture_rad);
+  }
   int rows() const { return range_.count; }
   int cols() const { return bearings_.count(); }
 

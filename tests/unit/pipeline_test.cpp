@@ -141,6 +141,24 @@ TEST_F(Pipeline, FrameSelectionAndStride) {
   EXPECT_EQ(selectedFrames(m, p), (std::vector<std::size_t>{2, 5, 8, 11}));
 }
 
+TEST_F(Pipeline, ApertureOverrideNarrowsWhatEachFrameCarves) {
+  SilentProgress progress;
+  const Mission m = readMission(mission());
+  ReconstructionParams own;
+  own.mesh_enabled = false;
+  ReconstructionParams same = own;
+  same.vertical_aperture_rad = m.sonar.verticalAperture();
+  ReconstructionParams narrow = own;
+  narrow.vertical_aperture_rad = m.sonar.verticalAperture() / 2.0;
+  const ReconstructionResult r_own = reconstruct(m, own, progress);
+  const ReconstructionResult r_same = reconstruct(m, same, progress);
+  const ReconstructionResult r_narrow = reconstruct(m, narrow, progress);
+  EXPECT_EQ(r_same.occupied_voxels, r_own.occupied_voxels);
+  EXPECT_EQ(r_same.surface.size(), r_own.surface.size());
+  // Half the aperture: each frustum is half as tall, so the map touches fewer blocks.
+  EXPECT_LT(r_narrow.map_bytes, r_own.map_bytes);
+}
+
 TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
   test::ScratchDir dir;
   ReconstructionParams p;
@@ -150,6 +168,7 @@ TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
   p.carve.region = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -2, 3), Eigen::Vector3d(4, 5, 6));
   p.stride = 2;
   p.min_views = 7;
+  p.vertical_aperture_rad = degToRad(12.0);
   test::writeText(dir.path() / "p.yaml", p.toYaml());
   const ReconstructionParams back =
       ReconstructionParams::fromYamlFile((dir.path() / "p.yaml").string());
@@ -161,9 +180,11 @@ TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
   EXPECT_TRUE(back.carve.region->isApprox(*p.carve.region));
   EXPECT_EQ(back.stride, 2u);
   EXPECT_EQ(back.min_views, 7u);
+  EXPECT_NEAR(back.vertical_aperture_rad, degToRad(12.0), 1e-12);
   for (const std::string bad :
        {"voxel_size_m: -1\n", "engine: magic\n", "frames: {stride: 0}\n",
-        "region: {min_m: [0, 0, 0], max_m: [-1, 1, 1]}\n", "range_min_m: 5\nrange_max_m: 4\n"}) {
+        "region: {min_m: [0, 0, 0], max_m: [-1, 1, 1]}\n", "range_min_m: 5\nrange_max_m: 4\n",
+        "vertical_aperture_deg: 200\n", "vertical_aperture_deg: -3\n"}) {
     test::writeText(dir.path() / "bad.yaml", bad);
     EXPECT_THROW(ReconstructionParams::fromYamlFile((dir.path() / "bad.yaml").string()), Error)
         << bad;

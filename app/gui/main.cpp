@@ -1,0 +1,100 @@
+// sonarcarve: the workbench GUI.
+//   sonarcarve [MISSION | SESSION.sonarcarve] [--params P.yaml] [--noise-model N.yaml]
+//              [--screenshot FILE.png] [--quit-when-done] [--frame N] [--colour-by MODE]
+// With --screenshot the window is captured once the first reconstruction has finished
+// (for the README and the user guide); --quit-when-done then exits with the run's status.
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QFileInfo>
+#include <QTimer>
+#include <iostream>
+
+#include "frame_timeline.h"
+#include "main_window.h"
+#include "map_view.h"
+#include "params_panel.h"
+#include "vtk_gl_widget.h"
+
+int main(int argc, char** argv) {
+  sonarcarve::widgets::VtkGlWidget::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("SonarCarve");
+  QApplication::setOrganizationName("SonarCarve");
+  QApplication::setApplicationVersion(SONARCARVE_VERSION);
+  QApplication::setWindowIcon(QIcon::fromTheme("sonarcarve"));
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      "SonarCarve workbench: 3D maps of underwater structures from 2D imaging sonar");
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addPositionalArgument("mission", "Mission folder or session file (.sonarcarve) to open");
+  const QCommandLineOption params({"p", "params"}, "Reconstruction parameters YAML", "file");
+  const QCommandLineOption noise({"n", "noise-model"}, "Noise model for the Z-test", "file");
+  const QCommandLineOption screenshot(
+      "screenshot", "Save a PNG of the window once the first run finishes", "file");
+  const QCommandLineOption quit("quit-when-done", "Exit once the first run finishes");
+  const QCommandLineOption frame("frame", "Frame to show once the first run finishes", "index");
+  const QCommandLineOption colour("colour-by", "intensity | depth | error", "mode");
+  parser.addOptions({params, noise, screenshot, quit, frame, colour});
+  parser.process(app);
+
+  sonarcarve::gui::MainWindow window;
+  if (parser.isSet(params) && !window.loadParams(parser.value(params))) {
+    std::cerr << "sonarcarve: cannot load " << parser.value(params).toStdString() << "\n";
+  }
+  if (parser.isSet(noise)) {
+    sonarcarve::ReconstructionParams p = window.paramsPanel().params();
+    p.noise_model = QFileInfo(parser.value(noise)).absoluteFilePath().toStdString();
+    window.setParams(p);
+  }
+  window.show();
+
+  int status = 0;
+  const bool quit_when_done = parser.isSet(quit);
+  const QString shot = parser.value(screenshot);
+  if (parser.isSet(colour)) {
+    const QString mode = parser.value(colour);
+    window.setColourBy(mode == "error"   ? sonarcarve::widgets::MapView::ColourBy::Error
+                       : mode == "depth" ? sonarcarve::widgets::MapView::ColourBy::Depth
+                                         : sonarcarve::widgets::MapView::ColourBy::Intensity);
+  }
+  const auto done = [&](bool ok) {
+    status = ok ? 0 : 1;
+    if (parser.isSet(frame)) {
+      window.timeline().setCurrentFrame(parser.value(frame).toInt());
+    }
+    if (!shot.isEmpty()) {
+      // Let the last redraw reach the screen before capturing.
+      QTimer::singleShot(600, &window, [&window, shot, quit_when_done, &status] {
+        if (!window.grab().save(shot)) {
+          std::cerr << "sonarcarve: cannot write " << shot.toStdString() << "\n";
+          status = 1;
+        }
+        if (quit_when_done) {
+          QApplication::exit(status);
+        }
+      });
+    } else if (quit_when_done) {
+      QApplication::exit(status);
+    }
+  };
+  QObject::connect(
+      &window, &sonarcarve::gui::MainWindow::runFinished, &window, [&] { done(true); },
+      Qt::SingleShotConnection);
+  QObject::connect(
+      &window, &sonarcarve::gui::MainWindow::runFailed, &window, [&] { done(false); },
+      Qt::SingleShotConnection);
+
+  const QStringList args = parser.positionalArguments();
+  if (!args.isEmpty()) {
+    const QString path = args.front();
+    const bool opened =
+        path.endsWith(".sonarcarve") ? window.openSession(path) : window.openMission(path);
+    if (!opened && quit_when_done) {
+      return 1;
+    }
+  }
+  const int code = app.exec();
+  return code != 0 ? code : status;
+}

@@ -1,0 +1,679 @@
+#include "main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QBuffer>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QStyle>
+#include <QTime>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include "carve/occupancy_export.h"
+#include "common/error.h"
+#include "fan_view.h"
+#include "frame_image.h"
+#include "frame_timeline.h"
+#include "io/atomic_file.h"
+#include "map_view.h"
+#include "mesh/mesh_export.h"
+#include "occlusion/surface_points.h"
+#include "params_panel.h"
+#include "session.h"
+#include "sim/scene_io.h"
+#include "track_view.h"
+
+namespace sonarcarve::gui {
+namespace {
+
+constexpr int kMaxRecent = 8;
+constexpr int kFollowInterval_ms = 250;
+
+QString describe(const std::exception& e) {
+  return QString::fromStdString(e.what());
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), runner_(std::make_unique<ReconstructionRunner>()) {
+  setWindowTitle(tr("SonarCarve"));
+  setAcceptDrops(true);
+  resize(1280, 800);
+
+  raw_view_ = new widgets::FanView(tr("raw"));
+  denoised_view_ = new widgets::FanView(tr("denoised"));
+  timeline_ = new widgets::FrameTimeline;
+  auto* fans = new QSplitter(Qt::Vertical);
+  fans->addWidget(raw_view_);
+  fans->addWidget(denoised_view_);
+  auto* left = new QWidget;
+  auto* left_layout = new QVBoxLayout(left);
+  left_layout->setContentsMargins(0, 0, 0, 0);
+  left_layout->addWidget(fans, 1);
+  left_layout->addWidget(timeline_);
+  map_view_ = new widgets::MapView;
+  auto* centre = new QSplitter(Qt::Horizontal);
+  centre->addWidget(left);
+  centre->addWidget(map_view_);
+  centre->setStretchFactor(0, 2);
+  centre->setStretchFactor(1, 3);
+  setCentralWidget(centre);
+
+  progress_bar_ = new QProgressBar;
+  progress_bar_->setMaximumWidth(260);
+  progress_bar_->setTextVisible(true);
+  progress_label_ = new QLabel(tr("Open a mission (File > Open, or drop its folder here)"));
+  statusBar()->addWidget(progress_label_, 1);
+  statusBar()->addPermanentWidget(progress_bar_);
+
+  buildDocks();
+  buildMenus();
+  buildToolbar();
+  wireRunner();
+
+  connect(timeline_, &widgets::FrameTimeline::currentFrameChanged, this, &MainWindow::showFrame);
+  connect(params_panel_, &widgets::ParamsPanel::paramsEdited, this, &MainWindow::paramsEdited);
+  for (auto* view : {raw_view_, denoised_view_}) {
+    connect(view, &widgets::FanView::hovered, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 3000); });
+  }
+  follow_timer_.setInterval(kFollowInterval_ms);
+  connect(&follow_timer_, &QTimer::timeout, this, [this] {
+    if (latest_carved_frame_ >= 0 && follow_action_->isChecked()) {
+      timeline_->setCurrentFrame(static_cast<int>(latest_carved_frame_));
+    }
+  });
+  updateRunActions();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildDocks() {
+  params_panel_ = new widgets::ParamsPanel;
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(params_panel_);
+  scroll->setWidgetResizable(true);
+  auto* params_dock = new QDockWidget(tr("Parameters"), this);
+  params_dock->setObjectName("parameters");
+  params_dock->setWidget(scroll);
+  addDockWidget(Qt::LeftDockWidgetArea, params_dock);
+
+  track_view_ = new widgets::TrackView;
+  auto* track_dock = new QDockWidget(tr("Navigation"), this);
+  track_dock->setObjectName("navigation");
+  track_dock->setWidget(track_view_);
+  addDockWidget(Qt::BottomDockWidgetArea, track_dock);
+
+  log_ = new QPlainTextEdit;
+  log_->setReadOnly(true);
+  log_->setMaximumBlockCount(5000);
+  auto* log_dock = new QDockWidget(tr("Log"), this);
+  log_dock->setObjectName("log");
+  log_dock->setWidget(log_);
+  addDockWidget(Qt::BottomDockWidgetArea, log_dock);
+  splitDockWidget(track_dock, log_dock, Qt::Horizontal);
+}
+
+void MainWindow::buildMenus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(style()->standardIcon(QStyle::SP_DirOpenIcon), tr("&Open mission…"),
+                  QKeySequence::Open, this, [this] {
+                    const QString dir =
+                        QFileDialog::getExistingDirectory(this, tr("Open a mission folder"));
+                    if (!dir.isEmpty()) {
+                      openMission(dir);
+                    }
+                  });
+  recent_menu_ = file->addMenu(tr("Open &recent"));
+  fillRecentMenu();
+  file->addSeparator();
+  file->addAction(tr("Open &session…"), this, [this] {
+    const QString f = QFileDialog::getOpenFileName(this, tr("Open a session"), QString(),
+                                                   tr("SonarCarve sessions (*.sonarcarve)"));
+    if (!f.isEmpty()) {
+      openSession(f);
+    }
+  });
+  file->addAction(tr("Save s&ession…"), QKeySequence::Save, this, [this] {
+    const QString f = QFileDialog::getSaveFileName(this, tr("Save the session"), QString(),
+                                                   tr("SonarCarve sessions (*.sonarcarve)"));
+    if (!f.isEmpty()) {
+      saveSession(f);
+    }
+  });
+  file->addSeparator();
+  file->addAction(tr("&Load parameters…"), this, [this] {
+    const QString f = QFileDialog::getOpenFileName(this, tr("Load parameters"), QString(),
+                                                   tr("Parameters (*.yaml *.yml)"));
+    if (!f.isEmpty()) {
+      loadParams(f);
+    }
+  });
+  file->addAction(tr("Save &parameters…"), this, [this] {
+    const QString f = QFileDialog::getSaveFileName(this, tr("Save parameters"), "params.yaml",
+                                                   tr("Parameters (*.yaml *.yml)"));
+    if (!f.isEmpty()) {
+      saveParams(f);
+    }
+  });
+  file->addSeparator();
+  QMenu* exports = file->addMenu(tr("&Export"));
+  const auto add_export = [&](const QString& label, Export kind, const QString& filter) {
+    exports->addAction(label, this, [this, kind, filter] {
+      const QString f = QFileDialog::getSaveFileName(this, tr("Export"), QString(), filter);
+      if (!f.isEmpty()) {
+        exportTo(kind, f);
+      }
+    });
+  };
+  add_export(tr("Surface points (PLY)…"), Export::SurfacePly, tr("PLY (*.ply)"));
+  add_export(tr("Map (OctoMap .bt)…"), Export::MapBt, tr("OctoMap (*.bt)"));
+  add_export(tr("Mesh (PLY)…"), Export::MeshPly, tr("PLY (*.ply)"));
+  add_export(tr("Mesh (STL)…"), Export::MeshStl, tr("STL (*.stl)"));
+  add_export(tr("3D view (PNG)…"), Export::ViewPng, tr("PNG (*.png)"));
+  file->addSeparator();
+  file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* run = menuBar()->addMenu(tr("&Run"));
+  run_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Start"), this,
+                               &MainWindow::startRun);
+  run_action_->setShortcut(Qt::Key_F5);
+  pause_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaPause), tr("&Pause"));
+  pause_action_->setCheckable(true);
+  connect(pause_action_, &QAction::toggled, this, &MainWindow::setPaused);
+  cancel_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaStop), tr("&Cancel"), this,
+                                  &MainWindow::cancelRun);
+  cancel_action_->setShortcut(Qt::Key_Escape);
+  run->addSeparator();
+  run->addAction(tr("&Reset parameters to defaults"), this, [this] {
+    ReconstructionParams defaults;
+    defaults.noise_model = params_panel_->params().noise_model;  // data, not a tuning
+    setParams(defaults);
+    paramsEdited();
+  });
+  follow_action_ = run->addAction(tr("&Follow the carving in the frame view"));
+  follow_action_->setCheckable(true);
+  follow_action_->setChecked(true);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  view->addAction(tr("&Fit"), this, [this] { map_view_->fitCamera(); });
+  view->addAction(tr("&Top"), this, [this] { map_view_->viewFromTop(); });
+  view->addAction(tr("&Side"), this, [this] { map_view_->viewFromSide(); });
+  QAction* ortho = view->addAction(tr("&Orthographic"));
+  ortho->setCheckable(true);
+  connect(ortho, &QAction::toggled, this, [this](bool on) { map_view_->setOrthographic(on); });
+}
+
+void MainWindow::buildToolbar() {
+  QToolBar* bar = addToolBar(tr("Run"));
+  bar->setObjectName("run");
+  bar->addAction(run_action_);
+  bar->addAction(pause_action_);
+  bar->addAction(cancel_action_);
+  bar->addSeparator();
+  bar->addAction(tr("Fit"), this, [this] { map_view_->fitCamera(); });
+  bar->addAction(tr("Top"), this, [this] { map_view_->viewFromTop(); });
+  bar->addAction(tr("Side"), this, [this] { map_view_->viewFromSide(); });
+  bar->addSeparator();
+  bar->addWidget(new QLabel(tr(" Show ")));
+  layer_ = new QComboBox;
+  layer_->addItems({tr("carved map"), tr("surface points"), tr("mesh")});
+  layer_->setToolTip(tr("The carved map grows live; the surface and its mesh come at the end"));
+  bar->addWidget(layer_);
+  connect(layer_, &QComboBox::currentIndexChanged, this,
+          [this](int i) { map_view_->setLayer(static_cast<widgets::MapView::Layer>(i)); });
+  bar->addWidget(new QLabel(tr(" Colour by ")));
+  colour_by_ = new QComboBox;
+  colour_by_->addItems({tr("intensity"), tr("depth"), tr("error vs ground truth")});
+  bar->addWidget(colour_by_);
+  connect(colour_by_, &QComboBox::currentIndexChanged, this,
+          [this](int i) { map_view_->setColourBy(static_cast<widgets::MapView::ColourBy>(i)); });
+}
+
+void MainWindow::wireRunner() {
+  connect(runner_.get(), &ReconstructionRunner::progressed, this,
+          [this](int, const QString& stage, qulonglong done, qulonglong total) {
+            progress_bar_->setMaximum(static_cast<int>(total));
+            progress_bar_->setValue(static_cast<int>(done));
+            progress_bar_->setFormat(stage + " %v/%m");
+            QString text = tr("%1: %2 of %3").arg(stage).arg(done).arg(total);
+            if (stage == "carve" && done > 0) {
+              const double elapsed =
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - run_started_)
+                      .count();
+              const double left = elapsed * static_cast<double>(total - done) / done;
+              text += tr(" frames, about %1 s left").arg(left, 0, 'f', 0);
+            }
+            progress_label_->setText(text);
+          });
+  connect(runner_.get(), &ReconstructionRunner::blocksChanged, this,
+          [this](int, const std::vector<widgets::MapViewBlock>& blocks) {
+            map_view_->applyBlocks(blocks);
+          });
+  connect(runner_.get(), &ReconstructionRunner::frameCarved, this,
+          [this](int, qulonglong index) { latest_carved_frame_ = static_cast<long>(index); });
+  connect(runner_.get(), &ReconstructionRunner::frameSkipped, this,
+          [this](int, const QString& message) { log(tr("skipped: %1").arg(message)); });
+  connect(runner_.get(), &ReconstructionRunner::finished, this,
+          [this](int, std::shared_ptr<const ReconstructionResult> result,
+                 const std::vector<float>& surface_errors_m) {
+            result_ = result;
+            follow_timer_.stop();
+            map_view_->flush();
+            map_view_->setMesh(result->mesh);
+            widgets::MapViewBlock surface;
+            for (const SurfacePoint& p : result->surface) {
+              surface.points.push_back(p.position_m);
+              surface.values.push_back(p.intensity);
+            }
+            surface.errors_m = surface_errors_m;
+            map_view_->setSurface(std::move(surface));
+            if (layer_->currentIndex() == 0) {
+              layer_->setCurrentIndex(1);  // the run's product: its surface
+              map_view_->fitCamera();
+            }
+            progress_bar_->setFormat(tr("done"));
+            const QString summary =
+                tr("done: %1 frames, %2 occupied voxels, %3 surface points, %4 mesh triangles, "
+                   "%5 s (carving %6 ms/frame)")
+                    .arg(result->frames_used)
+                    .arg(result->occupied_voxels)
+                    .arg(result->surface.size())
+                    .arg(result->mesh.triangles.size())
+                    .arg(result->total_s, 0, 'f', 1)
+                    .arg(result->carve_ms_median, 0, 'f', 1);
+            log(summary);
+            progress_label_->setText(summary);
+            updateRunActions();
+            emit runFinished(result);
+          });
+  connect(runner_.get(), &ReconstructionRunner::failed, this, [this](int, const QString& message) {
+    follow_timer_.stop();
+    progress_label_->setText(tr("Reconstruction failed"));
+    showError(tr("Reconstruction failed"), message);
+    updateRunActions();
+    emit runFailed(message);
+  });
+}
+
+void MainWindow::log(const QString& line) {
+  log_->appendPlainText(QTime::currentTime().toString("HH:mm:ss  ") + line);
+}
+
+QString MainWindow::logText() const {
+  return log_->toPlainText();
+}
+
+void MainWindow::showError(const QString& title, const QString& message) {
+  log(tr("error: %1").arg(message));
+  // Window-modal and non-blocking: the event loop (and a running job) carry on.
+  auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->setObjectName("errorMessage");
+  box->open();
+}
+
+bool MainWindow::openMission(const QString& path) {
+  std::shared_ptr<const Mission> mission;
+  try {
+    mission = std::make_shared<const Mission>(readMission(path.toStdString()));
+    if (mission->frames.empty()) {
+      throw Error(path.toStdString(), "", "the mission has no frames");
+    }
+  } catch (const std::exception& e) {
+    showError(tr("Cannot open the mission"), describe(e));
+    return false;
+  }
+  runner_->cancel();
+  mission_ = mission;
+  result_.reset();
+  truth_.reset();
+  const auto truth_file = mission_->folder / "ground_truth.ply";
+  if (std::filesystem::exists(truth_file)) {
+    try {
+      truth_ = std::make_shared<const MeshDistance>(loadSceneMesh(truth_file));
+      log(tr("ground truth loaded: points can be coloured by their error"));
+    } catch (const std::exception& e) {
+      log(tr("ground truth not used: %1").arg(describe(e)));
+    }
+  }
+  setWindowTitle(tr("SonarCarve — %1").arg(QString::fromStdString(mission_->name)));
+  raw_view_->setSonar(mission_->sonar);
+  denoised_view_->setSonar(mission_->sonar);
+  std::vector<double> times;
+  std::vector<Eigen::Vector3d> sonar_track;
+  const Eigen::Isometry3d T_vehicle_sonar = mission_->mounting.T_vehicle_sonar();
+  for (const FrameRecord& f : mission_->frames) {
+    times.push_back(f.time_s);
+    if (mission_->nav.covers(f.time_s)) {
+      sonar_track.push_back(mission_->nav.T_world_sonar(f.time_s, T_vehicle_sonar).translation());
+    }
+  }
+  std::vector<widgets::TrackPoint> nav;
+  for (const NavSample& s : mission_->nav.samples()) {
+    nav.push_back({s.time_s, s.position_m});
+  }
+  track_view_->setTrack(std::move(nav));
+  map_view_->clearMap();
+  map_view_->setTrack(sonar_track);
+  timeline_->setFrameTimes(times);
+  updateDetector();
+  showFrame(0);
+  addRecent(QString::fromStdString(mission_->folder.string()));
+  log(tr("opened %1: %2 frames, sonar %3 (%4 beams x %5 bins)")
+          .arg(QString::fromStdString(mission_->folder.string()))
+          .arg(mission_->frames.size())
+          .arg(QString::fromStdString(mission_->sonar.id()))
+          .arg(mission_->sonar.cols())
+          .arg(mission_->sonar.rows()));
+  startRun();
+  return true;
+}
+
+void MainWindow::updateDetector() {
+  detector_.reset();
+  if (!mission_) {
+    return;
+  }
+  const ReconstructionParams p = params_panel_->params();
+  try {
+    if (p.noise_model != noise_model_path_) {
+      noise_model_.reset();
+      noise_model_path_ = p.noise_model;
+      if (!p.noise_model.empty()) {
+        noise_model_ = std::make_shared<const NoiseModel>(NoiseModel::load(p.noise_model));
+      }
+    }
+    detector_ = std::make_unique<Detector>(p.detector, noise_model_, mission_->sonar);
+  } catch (const std::exception& e) {
+    log(tr("denoised view unavailable: %1").arg(describe(e)));
+  }
+}
+
+void MainWindow::showFrame(int index) {
+  if (!mission_ || index < 0 || static_cast<std::size_t>(index) >= mission_->frames.size()) {
+    return;
+  }
+  const auto i = static_cast<std::size_t>(index);
+  Frame frame;
+  try {
+    frame = loadFrame(*mission_, i);
+  } catch (const std::exception& e) {
+    raw_view_->clearFrame();
+    denoised_view_->clearFrame();
+    log(tr("frame %1: %2").arg(index).arg(describe(e)));
+    return;
+  }
+  const widgets::DisplayRange window = widgets::displayRange(frame.image);
+  raw_view_->setFrame(frame.image, window.low, window.high);
+  cv::Mat denoised;
+  if (detector_) {
+    denoised = detector_->apply(frame.image);
+    const bool probability = detector_->params().mode == "probability";
+    denoised_view_->setFrame(denoised, probability ? 0.0f : window.low,
+                             probability ? 1.0f : window.high);
+  } else {
+    denoised_view_->clearFrame();
+  }
+  const double t = mission_->frames[i].time_s;
+  track_view_->setCurrentTime(t);
+  if (mission_->nav.covers(t)) {
+    map_view_->setCurrentFrame(mission_->nav.T_world_sonar(t, mission_->mounting.T_vehicle_sonar()),
+                               mission_->sonar, denoised.empty() ? frame.image : denoised);
+  }
+}
+
+void MainWindow::setParams(const ReconstructionParams& params) {
+  params_panel_->setParams(params);
+  updateDetector();
+}
+
+void MainWindow::setColourBy(widgets::MapView::ColourBy by) {
+  colour_by_->setCurrentIndex(static_cast<int>(by));
+}
+
+void MainWindow::paramsEdited() {
+  updateDetector();
+  showFrame(timeline_->currentFrame());
+  if (mission_) {
+    log(tr("parameters changed: re-running"));
+    startRun();
+  }
+}
+
+void MainWindow::startRun() {
+  if (!mission_) {
+    showError(tr("Nothing to run"), tr("Open a mission first."));
+    return;
+  }
+  ReconstructionParams params = params_panel_->params();
+  try {
+    params.validate();
+  } catch (const std::exception& e) {
+    showError(tr("Invalid parameters"), describe(e));
+    return;
+  }
+  run_params_ = params;
+  map_view_->clearMap();
+  layer_->setCurrentIndex(0);
+  result_.reset();
+  latest_carved_frame_ = -1;
+  run_started_ = std::chrono::steady_clock::now();
+  {
+    const QSignalBlocker block(pause_action_);
+    pause_action_->setChecked(false);
+  }
+  runner_->start({mission_, params, truth_});
+  follow_timer_.start();
+  progress_bar_->setValue(0);
+  progress_label_->setText(tr("carving…"));
+  updateRunActions();
+}
+
+void MainWindow::cancelRun() {
+  if (!runner_->running()) {
+    return;
+  }
+  runner_->cancel();
+  follow_timer_.stop();
+  log(tr("cancelled: the map shows what was carved so far"));
+  progress_label_->setText(tr("Cancelled"));
+  updateRunActions();
+}
+
+void MainWindow::setPaused(bool paused) {
+  runner_->setPaused(paused);
+  progress_label_->setText(paused ? tr("Paused") : tr("carving…"));
+}
+
+void MainWindow::updateRunActions() {
+  const bool running = runner_->running();
+  run_action_->setEnabled(mission_ != nullptr);
+  run_action_->setText(running ? tr("Restart") : tr("Start"));
+  pause_action_->setEnabled(running);
+  cancel_action_->setEnabled(running);
+}
+
+bool MainWindow::exportTo(Export kind, const QString& file) {
+  const std::filesystem::path path = file.toStdString();
+  try {
+    if (kind == Export::ViewPng) {
+      const QImage image = map_view_->grabImage();
+      QByteArray bytes;
+      QBuffer buffer(&bytes);
+      buffer.open(QIODevice::WriteOnly);
+      if (image.isNull() || !image.save(&buffer, "PNG")) {
+        throw Error(path.string(), "", "could not render the 3D view");
+      }
+      writeFileAtomically(path,
+                          std::string(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    } else {
+      if (!result_) {
+        throw Error(path.string(), "", "no finished reconstruction to export yet");
+      }
+      switch (kind) {
+        case Export::SurfacePly:
+          writeSurfacePointsPly(result_->surface, path);
+          break;
+        case Export::MapBt:
+          if (!result_->map) {
+            throw Error(path.string(), "", "the reference engine keeps no map to export");
+          }
+          writeOccupancyBt(*result_->map, path);
+          break;
+        case Export::MeshPly:
+        case Export::MeshStl: {
+          if (result_->mesh.triangles.empty()) {
+            throw Error(path.string(), "", "the run made no mesh (turn 'Build a mesh' on)");
+          }
+          ExportOptions options;
+          options.format = kind == Export::MeshPly ? "ply" : "stl";
+          exportMesh(result_->mesh, path, options);
+          break;
+        }
+        case Export::ViewPng:
+          break;
+      }
+    }
+  } catch (const std::exception& e) {
+    showError(tr("Export failed"), describe(e));
+    return false;
+  }
+  log(tr("exported %1").arg(file));
+  return true;
+}
+
+Session MainWindow::currentSession() const {
+  Session s;
+  s.mission = mission_ ? mission_->folder.string() : std::string();
+  s.params = params_panel_->params();
+  s.camera = map_view_->cameraState();
+  s.frame = timeline_->currentFrame();
+  static const char* names[] = {"intensity", "depth", "error"};
+  s.colour_by = names[std::clamp(colour_by_->currentIndex(), 0, 2)];
+  return s;
+}
+
+bool MainWindow::saveSession(const QString& file) {
+  try {
+    gui::saveSession(currentSession(), file.toStdString());
+  } catch (const std::exception& e) {
+    showError(tr("Cannot save the session"), describe(e));
+    return false;
+  }
+  log(tr("session saved to %1").arg(file));
+  return true;
+}
+
+bool MainWindow::openSession(const QString& file) {
+  Session s;
+  try {
+    s = loadSession(file.toStdString());
+  } catch (const std::exception& e) {
+    showError(tr("Cannot open the session"), describe(e));
+    return false;
+  }
+  setParams(s.params);
+  if (!openMission(QString::fromStdString(s.mission))) {
+    return false;
+  }
+  map_view_->setCameraState(s.camera);
+  colour_by_->setCurrentIndex(s.colour_by == "depth" ? 1 : s.colour_by == "error" ? 2 : 0);
+  timeline_->setCurrentFrame(s.frame);
+  follow_action_->setChecked(false);  // keep the saved frame in view
+  addRecent(file);
+  return true;
+}
+
+bool MainWindow::loadParams(const QString& file) {
+  try {
+    setParams(ReconstructionParams::fromYamlFile(file.toStdString()));
+  } catch (const std::exception& e) {
+    showError(tr("Cannot load the parameters"), describe(e));
+    return false;
+  }
+  log(tr("parameters loaded from %1").arg(file));
+  paramsEdited();
+  return true;
+}
+
+bool MainWindow::saveParams(const QString& file) {
+  try {
+    writeFileAtomically(file.toStdString(), params_panel_->params().toYaml());
+  } catch (const std::exception& e) {
+    showError(tr("Cannot save the parameters"), describe(e));
+    return false;
+  }
+  log(tr("parameters saved to %1 (sonarcarve-cli reconstruct --params reads it)").arg(file));
+  return true;
+}
+
+void MainWindow::addRecent(const QString& path) {
+  QSettings settings;
+  QStringList recent = settings.value("recent").toStringList();
+  recent.removeAll(path);
+  recent.prepend(path);
+  while (recent.size() > kMaxRecent) {
+    recent.removeLast();
+  }
+  settings.setValue("recent", recent);
+  fillRecentMenu();
+}
+
+void MainWindow::fillRecentMenu() {
+  recent_menu_->clear();
+  const QStringList recent = QSettings().value("recent").toStringList();
+  for (const QString& path : recent) {
+    recent_menu_->addAction(path, this, [this, path] {
+      if (path.endsWith(".sonarcarve")) {
+        openSession(path);
+      } else {
+        openMission(path);
+      }
+    });
+  }
+  recent_menu_->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (event->mimeData()->hasUrls()) {
+    event->acceptProposedAction();
+  }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.isEmpty()) {
+    return;
+  }
+  const QString path = urls.front().toLocalFile();
+  if (path.endsWith(".sonarcarve")) {
+    openSession(path);
+  } else {
+    openMission(path);
+  }
+  event->acceptProposedAction();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  runner_->cancel();
+  event->accept();
+}
+
+}  // namespace sonarcarve::gui

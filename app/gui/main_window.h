@@ -1,0 +1,129 @@
+// MainWindow: the SonarCarve workbench. It only wires the widgets together: the sonar frame as
+// raw and denoised fans with the frame timeline, the 3D map carved live by the
+// ReconstructionRunner, the navigation track, the parameter panel, run control, exports, the
+// log, sessions and recent files. Loading errors go to a message and the log; nothing the user
+// opens can take the window down.
+#pragma once
+
+#include <QMainWindow>
+#include <QTimer>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+
+#include "denoise/detector.h"
+#include "eval/evaluator.h"
+#include "io/mission.h"
+#include "map_view.h"
+#include "pipeline/reconstruction.h"
+#include "reconstruction_runner.h"
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QMenu;
+class QPlainTextEdit;
+class QProgressBar;
+
+namespace sonarcarve::widgets {
+class FanView;
+class FrameTimeline;
+class MapView;
+class ParamsPanel;
+class TrackView;
+}  // namespace sonarcarve::widgets
+
+namespace sonarcarve::gui {
+
+struct Session;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  enum class Export { SurfacePly, MapBt, MeshPly, MeshStl, ViewPng };
+
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  /// Opens a mission folder (or its mission.yaml) and starts reconstructing it. Returns false,
+  /// after telling the user why, if it cannot be read.
+  bool openMission(const QString& path);
+  bool openSession(const QString& file);
+  bool saveSession(const QString& file);
+  bool loadParams(const QString& file);
+  bool saveParams(const QString& file);
+  /// Writes a deliverable of the last finished run; false (and a message) if there is none or
+  /// the write failed. The previous file is left intact on failure.
+  bool exportTo(Export kind, const QString& file);
+  void setParams(const ReconstructionParams& params);
+  void setColourBy(widgets::MapView::ColourBy by);
+
+  // Run control.
+  void startRun();
+  void cancelRun();
+  void setPaused(bool paused);
+
+  // For tests and the screenshot option.
+  ReconstructionRunner& runner() { return *runner_; }
+  widgets::MapView& mapView() { return *map_view_; }
+  widgets::ParamsPanel& paramsPanel() { return *params_panel_; }
+  widgets::FrameTimeline& timeline() { return *timeline_; }
+  std::shared_ptr<const ReconstructionResult> lastResult() const { return result_; }
+  const Mission* mission() const { return mission_.get(); }
+  QString logText() const;
+
+ signals:
+  void runFinished(std::shared_ptr<const ReconstructionResult> result);
+  void runFailed(const QString& message);
+
+ protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void buildMenus();
+  void buildToolbar();
+  void buildDocks();
+  void wireRunner();
+  void showError(const QString& title, const QString& message);
+  void log(const QString& line);
+  void showFrame(int index);
+  void paramsEdited();
+  void updateDetector();
+  void addRecent(const QString& path);
+  void fillRecentMenu();
+  void updateRunActions();
+  Session currentSession() const;
+
+  std::unique_ptr<ReconstructionRunner> runner_;
+  std::shared_ptr<const Mission> mission_;
+  std::shared_ptr<const MeshDistance> truth_;
+  std::shared_ptr<const ReconstructionResult> result_;
+  std::unique_ptr<Detector> detector_;
+  std::shared_ptr<const NoiseModel> noise_model_;
+  std::string noise_model_path_;
+  ReconstructionParams run_params_;
+
+  widgets::FanView* raw_view_ = nullptr;
+  widgets::FanView* denoised_view_ = nullptr;
+  widgets::FrameTimeline* timeline_ = nullptr;
+  widgets::MapView* map_view_ = nullptr;
+  widgets::TrackView* track_view_ = nullptr;
+  widgets::ParamsPanel* params_panel_ = nullptr;
+  QPlainTextEdit* log_ = nullptr;
+  QProgressBar* progress_bar_ = nullptr;
+  QLabel* progress_label_ = nullptr;
+  QComboBox* colour_by_ = nullptr;
+  QComboBox* layer_ = nullptr;
+  QMenu* recent_menu_ = nullptr;
+  QAction* run_action_ = nullptr;
+  QAction* pause_action_ = nullptr;
+  QAction* cancel_action_ = nullptr;
+  QAction* follow_action_ = nullptr;
+  QTimer follow_timer_;
+  long latest_carved_frame_ = -1;
+  std::chrono::steady_clock::time_point run_started_;
+};
+
+}  // namespace sonarcarve::gui

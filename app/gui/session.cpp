@@ -1,0 +1,86 @@
+#include "session.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include "common/error.h"
+#include "io/atomic_file.h"
+#include "io/yaml_fields.h"
+
+namespace sonarcarve::gui {
+namespace {
+
+constexpr const char* kFormat = "sonarcarve-session";
+constexpr int kVersion = 1;
+
+YAML::Node vector3(const Eigen::Vector3d& v) {
+  YAML::Node n(YAML::NodeType::Sequence);
+  n.SetStyle(YAML::EmitterStyle::Flow);
+  for (int i = 0; i < 3; ++i) {
+    n.push_back(v[i]);
+  }
+  return n;
+}
+
+Eigen::Vector3d vector3(const YamlFields& f, const YAML::Node& camera, const std::string& key) {
+  const auto v = f.numbers(f.child(camera, "camera", key), "camera." + key, 3);
+  return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+void saveSession(const Session& s, const std::filesystem::path& file) {
+  YAML::Node root;
+  root["format"] = kFormat;
+  root["version"] = kVersion;
+  root["mission"] = s.mission;
+  root["frame"] = s.frame;
+  root["colour_by"] = s.colour_by;
+  YAML::Node camera;
+  camera["position"] = vector3(s.camera.position);
+  camera["focal_point"] = vector3(s.camera.focal_point);
+  camera["view_up"] = vector3(s.camera.view_up);
+  camera["parallel"] = s.camera.parallel;
+  camera["parallel_scale"] = s.camera.parallel_scale;
+  camera["view_angle_deg"] = s.camera.view_angle_deg;
+  root["camera"] = camera;
+  root["params"] = YAML::Load(s.params.toYaml());
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << root;
+  writeFileAtomically(file, std::string("# SonarCarve GUI session\n") + out.c_str() + "\n");
+}
+
+Session loadSession(const std::filesystem::path& file) {
+  const YamlFields f(file.string());
+  const YAML::Node root = f.load();
+  if (f.text(f.child(root, "", "format"), "format") != kFormat) {
+    f.fail(root["format"], "format", std::string("expected '") + kFormat + "'");
+  }
+  if (f.number(f.child(root, "", "version"), "version") != kVersion) {
+    f.fail(root["version"], "version", "expected version 1");
+  }
+  Session s;
+  s.mission = f.text(f.child(root, "", "mission"), "mission");
+  if (root["frame"]) {
+    s.frame = static_cast<int>(f.number(root["frame"], "frame"));
+  }
+  if (root["colour_by"]) {
+    s.colour_by = f.text(root["colour_by"], "colour_by");
+  }
+  if (const YAML::Node camera = root["camera"]) {
+    s.camera.position = vector3(f, camera, "position");
+    s.camera.focal_point = vector3(f, camera, "focal_point");
+    s.camera.view_up = vector3(f, camera, "view_up");
+    s.camera.parallel = camera["parallel"] && camera["parallel"].as<bool>(false);
+    s.camera.parallel_scale =
+        f.positive(f.child(camera, "camera", "parallel_scale"), "camera.parallel_scale");
+    s.camera.view_angle_deg =
+        f.positive(f.child(camera, "camera", "view_angle_deg"), "camera.view_angle_deg");
+  }
+  if (const YAML::Node params = root["params"]) {
+    s.params = ReconstructionParams::fromYamlText(YAML::Dump(params), file.string());
+  }
+  return s;
+}
+
+}  // namespace sonarcarve::gui

@@ -1,0 +1,34 @@
+// A GUI session saved to a YAML file: the mission, the reconstruction parameters (the same keys
+// as a params YAML, embedded), the camera, the frame shown and the colouring. Qt-free.
+//   format: sonarcarve-session
+//   version: 1
+//   mission: /path/to/mission
+//   frame: 12
+//   colour_by: intensity | depth | error
+//   camera: {position: [n, e, d], focal_point: [...], view_up: [...], parallel: false,
+//            parallel_scale: 1, view_angle_deg: 30}
+//   params: {...}
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "map_view.h"
+#include "pipeline/reconstruction_params.h"
+
+namespace sonarcarve::gui {
+
+struct Session {
+  std::string mission;
+  ReconstructionParams params;
+  widgets::CameraState camera;
+  int frame = 0;
+  std::string colour_by = "intensity";
+};
+
+/// Writes atomically; throws Error if the file cannot be written.
+void saveSession(const Session& session, const std::filesystem::path& file);
+/// Throws Error naming the file, line and key on a missing or bad value.
+Session loadSession(const std::filesystem::path& file);
+
+}  // namespace sonarcarve::gui

@@ -1,0 +1,232 @@
+// The workbench as an analyst drives it, under Xvfb: open the demo scene's mission, run to the
+// end and get the CLI's map; pause, cancel and carry on; a parameter change supersedes the
+// running job; a broken mission gives a message and the window stays usable; sessions and
+// exports round-trip.
+#include <QDoubleSpinBox>
+#include <QMessageBox>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QtTest>
+#include <set>
+
+#include "io/point_cloud_ply.h"
+#include "main_window.h"
+#include "map_view.h"
+#include "params_panel.h"
+#include "pipeline/reconstruction.h"
+#include "session.h"
+#include "sim/demo_scenes.h"
+#include "sim/simulation_run.h"
+#include "support/cli_runner.h"
+#include "support/test_support.h"
+#include "vtk_gl_widget.h"
+
+using sonarcarve::ReconstructionResult;
+using sonarcarve::gui::MainWindow;
+namespace fs = std::filesystem;
+
+namespace {
+
+using PointSet = std::set<std::tuple<float, float, float>>;
+
+PointSet pointSet(const std::vector<Eigen::Vector3f>& points) {
+  PointSet s;
+  for (const auto& p : points) {
+    s.insert({p.x(), p.y(), p.z()});
+  }
+  return s;
+}
+
+std::shared_ptr<const ReconstructionResult> waitForResult(MainWindow& window, int timeout_ms) {
+  QSignalSpy finished(&window, &MainWindow::runFinished);
+  if (!finished.wait(timeout_ms)) {
+    return nullptr;
+  }
+  return finished.front().front().value<std::shared_ptr<const ReconstructionResult>>();
+}
+
+}  // namespace
+
+Q_DECLARE_METATYPE(std::shared_ptr<const sonarcarve::ReconstructionResult>)
+
+class WorkbenchTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    qRegisterMetaType<std::shared_ptr<const ReconstructionResult>>();
+    scratch_ = std::make_unique<sonarcarve::test::ScratchDir>();
+    sonarcarve::TrajectorySpec trajectory;
+    sonarcarve::SimulationRequest request{sonarcarve::makeDemoScene("riser"),
+                                          "riser",
+                                          sonarcarve::test::paperSonar(),
+                                          trajectory,
+                                          {},
+                                          sonarcarve::NoiseSpec::none(),
+                                          sonarcarve::NavErrorSpec{},
+                                          false,
+                                          24,
+                                          mission()};
+    sonarcarve::SilentProgress progress;
+    sonarcarve::runSimulation(request, progress);
+  }
+
+  // The demo scene's mission, run to the end: the map the GUI shows and the surface it exports
+  // are the CLI's for the same parameters file.
+  void runToTheEndEqualsTheCli() {
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    const auto result = waitForResult(window, 120000);
+    QVERIFY(result);
+    QCOMPARE(result->frames_used, std::size_t{24});
+    window.mapView().flush();
+    // What the view shows is the carved map, voxel for voxel.
+    std::vector<Eigen::Vector3f> carved;
+    result->map->forEachOccupied([&](const Eigen::Vector3i& v, float) {
+      carved.push_back(result->map->voxelCentre(v).cast<float>());
+    });
+    QCOMPARE(window.mapView().mapPointCount(), carved.size());
+    QVERIFY(pointSet(window.mapView().mapPoints()) == pointSet(carved));
+
+    const fs::path params = scratch_->path() / "gui_params.yaml";
+    const fs::path gui_points = scratch_->path() / "gui_surface.ply";
+    QVERIFY(window.saveParams(QString::fromStdString(params.string())));
+    QVERIFY(window.exportTo(MainWindow::Export::SurfacePly,
+                            QString::fromStdString(gui_points.string())));
+    const fs::path cli_out = scratch_->path() / "cli";
+    const auto run = sonarcarve::test::runCli("reconstruct " + sonarcarve::test::quoted(mission()) +
+                                              " --params " + sonarcarve::test::quoted(params) +
+                                              " --out " + sonarcarve::test::quoted(cli_out));
+    QVERIFY2(run.exit_code == 0, run.output.c_str());
+    const auto cli = sonarcarve::readPointCloudPly(cli_out / "surface_points.ply");
+    const auto gui = sonarcarve::readPointCloudPly(gui_points);
+    QVERIFY(cli.positions.size() > 500);
+    QCOMPARE(gui.positions.size(), cli.positions.size());
+    QVERIFY(pointSet(gui.positions) == pointSet(cli.positions));
+    QVERIFY(run.output.find("\"occupied_voxels\": " + std::to_string(carved.size())) !=
+            std::string::npos);
+  }
+
+  // Pause holds the run mid-way; cancel stops it and the window carries on: a new run
+  // finishes.
+  void pauseAndCancelLeaveTheAppUsable() {
+    MainWindow window;
+    window.show();
+    QSignalSpy progressed(&window.runner(), &sonarcarve::gui::ReconstructionRunner::progressed);
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    window.setPaused(true);
+    QTest::qWait(300);
+    QVERIFY(window.runner().running());
+    const int reports = static_cast<int>(progressed.count());
+    QTest::qWait(300);
+    QCOMPARE(static_cast<int>(progressed.count()), reports);  // held while paused
+    window.cancelRun();
+    QVERIFY(!window.runner().running());
+    QVERIFY(!window.lastResult());
+    window.startRun();
+    const auto result = waitForResult(window, 120000);
+    QVERIFY(result);
+    QVERIFY(!result->cancelled);
+    QCOMPARE(result->frames_used, std::size_t{24});
+  }
+
+  // Changing a parameter while a run is going cancels it and runs again with the new value:
+  // only the new run's result arrives.
+  void parameterChangeSupersedesTheRunningJob() {
+    MainWindow window;
+    window.show();
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    window.setPaused(true);  // the first run is certainly still going
+    const int first_job = window.runner().currentJob();
+    window.paramsPanel().voxelSize()->setValue(4.0);  // cm, as the user types it
+    QVERIFY(QTest::qWaitFor([&] { return window.runner().currentJob() != first_job; }, 5000));
+    QVERIFY(finished.wait(120000));
+    QTest::qWait(200);
+    QCOMPARE(finished.count(), 1);
+    const auto result = window.lastResult();
+    QVERIFY(result && result->map);
+    QCOMPARE(result->map->voxelSize(), 0.04);
+    QVERIFY(!result->cancelled);
+  }
+
+  void brokenMissionShowsAnErrorAndTheWindowStaysOpen() {
+    MainWindow window;
+    window.show();
+    const fs::path broken = scratch_->path() / "broken";
+    fs::create_directories(broken);
+    sonarcarve::test::writeText(broken / "mission.yaml", "format: sonarcarve-mission\nversion: [");
+    QVERIFY(!window.openMission(QString::fromStdString(broken.string())));
+    auto* box = window.findChild<QMessageBox*>("errorMessage");
+    QVERIFY(box);
+    QVERIFY(box->isVisible());
+    QVERIFY(box->text().contains("mission.yaml"));
+    QVERIFY(window.logText().contains("mission.yaml"));
+    box->accept();
+    QVERIFY(!window.openMission(QString::fromStdString((scratch_->path() / "nowhere").string())));
+    QVERIFY(window.isVisible());
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QVERIFY(waitForResult(window, 120000));
+  }
+
+  void sessionRestoresMissionParametersAndCamera() {
+    const fs::path file = scratch_->path() / "s.sonarcarve";
+    sonarcarve::widgets::CameraState camera;
+    {
+      MainWindow window;
+      window.show();
+      QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+      QVERIFY(waitForResult(window, 120000));
+      auto p = window.paramsPanel().params();
+      p.detector.z = 3.5;
+      p.stride = 2;
+      window.setParams(p);
+      window.mapView().viewFromTop();
+      camera = window.mapView().cameraState();
+      QVERIFY(window.saveSession(QString::fromStdString(file.string())));
+      window.runner().cancel();
+    }
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openSession(QString::fromStdString(file.string())));
+    QCOMPARE(window.paramsPanel().params().detector.z, 3.5);
+    QCOMPARE(window.paramsPanel().params().stride, std::size_t{2});
+    QVERIFY(window.mapView().cameraState().position.isApprox(camera.position, 1e-9));
+    QVERIFY(window.mapView().cameraState().view_up.isApprox(camera.view_up, 1e-9));
+    const auto result = waitForResult(window, 120000);
+    QVERIFY(result);
+    QCOMPARE(result->frames_used, std::size_t{12});  // stride 2 of 24
+    // Exports of the restored run: a 3D view picture and the map, written in place.
+    const fs::path png = scratch_->path() / "view.png";
+    QVERIFY(window.exportTo(MainWindow::Export::ViewPng, QString::fromStdString(png.string())));
+    QImage image(QString::fromStdString(png.string()));
+    QVERIFY(!image.isNull());
+    QVERIFY(image.width() > 100);
+    const fs::path bt = scratch_->path() / "map.bt";
+    QVERIFY(window.exportTo(MainWindow::Export::MapBt, QString::fromStdString(bt.string())));
+    QVERIFY(fs::file_size(bt) > 100);
+    // A failed export leaves the previous file as it was.
+    const auto before = fs::file_size(bt);
+    QVERIFY(!window.exportTo(
+        MainWindow::Export::MapBt,
+        QString::fromStdString((scratch_->path() / "no" / "dir" / "m.bt").string())));
+    QCOMPARE(fs::file_size(bt), before);
+  }
+
+  void cleanupTestCase() { scratch_.reset(); }
+
+ private:
+  fs::path mission() const { return scratch_->path() / "riser"; }
+  std::unique_ptr<sonarcarve::test::ScratchDir> scratch_;
+};
+
+int main(int argc, char** argv) {
+  sonarcarve::widgets::VtkGlWidget::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  WorkbenchTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "workbench_test.moc"

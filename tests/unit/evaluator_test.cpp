@@ -1,0 +1,30 @@
+// Evaluation against a ground-truth mesh, on a plate whose distances are known exactly.
+#include <gtest/gtest.h>
+
+#include "eval/evaluator.h"
+#include "support/sim_scenes.h"
+
+namespace sonarcarve {
+namespace {
+
+TEST(MeshDistance, GivesTheDistanceToThePlateAndCapsItWhenAsked) {
+  // A 2 m plate in the plane x = 3, facing -x.
+  const Scene plate = test::plate({3, 0, 0}, {-1, 0, 0}, 2.0, 0.8f);
+  const MeshDistance distance(plate);
+  const std::vector<Eigen::Vector3f> points = {
+      {3.0f, 0.2f, -0.4f}, {2.95f, 0.0f, 0.0f}, {2.0f, 0.5f, 0.5f}, {3.0f, 1.5f, 0.0f}};
+  const std::vector<float> exact = distance.distances(points);
+  ASSERT_EQ(exact.size(), 4u);
+  EXPECT_NEAR(exact[0], 0.0, 1e-5);
+  EXPECT_NEAR(exact[1], 0.05, 1e-5);
+  EXPECT_NEAR(exact[2], 1.0, 1e-5);
+  EXPECT_NEAR(exact[3], 0.5, 1e-5);  // beyond the plate's edge at y = 1
+  const std::vector<float> capped = distance.distances(points, 0.2);
+  EXPECT_NEAR(capped[0], 0.0, 1e-5);
+  EXPECT_NEAR(capped[1], 0.05, 1e-5);
+  EXPECT_FLOAT_EQ(capped[2], 0.2f);
+  EXPECT_FLOAT_EQ(capped[3], 0.2f);
+}
+
+}  // namespace
+}  // namespace sonarcarve

@@ -1,0 +1,457 @@
+#include "map_view.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkLookupTable.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+#include "colour_maps.h"
+#include "vtk_gl_widget.h"
+
+namespace sonarcarve::widgets {
+namespace {
+
+vtkSmartPointer<vtkActor> makeActor(vtkPolyData* poly) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(poly);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+// Cells that draw each point, or consecutive points as one polyline.
+vtkSmartPointer<vtkCellArray> pointCells(vtkIdType count, bool as_line) {
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  connectivity->SetNumberOfValues(count);
+  for (vtkIdType i = 0; i < count; ++i) {
+    connectivity->SetValue(i, i);
+  }
+  if (as_line) {
+    offsets->SetNumberOfValues(count > 0 ? 2 : 1);
+    offsets->SetValue(0, 0);
+    if (count > 0) {
+      offsets->SetValue(1, count);
+    }
+  } else {
+    offsets->SetNumberOfValues(count + 1);
+    for (vtkIdType i = 0; i <= count; ++i) {
+      offsets->SetValue(i, i);
+    }
+  }
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
+vtkSmartPointer<vtkLookupTable> lookupTable(const std::array<unsigned char, 3>* colours,
+                                            int count) {
+  auto lut = vtkSmartPointer<vtkLookupTable>::New();
+  lut->SetNumberOfTableValues(count);
+  for (int i = 0; i < count; ++i) {
+    lut->SetTableValue(i, colours[i][0] / 255.0, colours[i][1] / 255.0, colours[i][2] / 255.0);
+  }
+  lut->Build();
+  return lut;
+}
+
+}  // namespace
+
+MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(gl_);
+  vtkRenderer* renderer = gl_->renderer();
+  renderer->SetBackground(0.09, 0.11, 0.14);
+  renderer->SetBackground2(0.22, 0.26, 0.31);
+  renderer->GradientBackgroundOn();
+
+  for (PointLayer* layer : {&map_layer_, &surface_layer_}) {
+    layer->poly = vtkSmartPointer<vtkPolyData>::New();
+    layer->actor = makeActor(layer->poly);
+    layer->actor->GetProperty()->SetPointSize(3.0f);
+    renderer->AddActor(layer->actor);
+  }
+  surface_layer_.actor->GetProperty()->SetPointSize(4.0f);
+
+  track_actor_ = makeActor(vtkSmartPointer<vtkPolyData>::New());
+  track_actor_->GetProperty()->SetColor(0.95, 0.85, 0.25);
+  track_actor_->GetProperty()->SetLineWidth(2.0f);
+  renderer->AddActor(track_actor_);
+
+  frustum_actor_ = makeActor(vtkSmartPointer<vtkPolyData>::New());
+  frustum_actor_->GetProperty()->SetColor(0.4, 0.85, 1.0);
+  frustum_actor_->GetProperty()->SetRepresentationToWireframe();
+  renderer->AddActor(frustum_actor_);
+
+  fan_actor_ = makeActor(vtkSmartPointer<vtkPolyData>::New());
+  fan_actor_->GetProperty()->LightingOff();
+  renderer->AddActor(fan_actor_);
+
+  mesh_actor_ = makeActor(vtkSmartPointer<vtkPolyData>::New());
+  mesh_actor_->GetProperty()->SetColor(0.78, 0.80, 0.84);
+  renderer->AddActor(mesh_actor_);
+  setLayer(Layer::Map);
+
+  redraw_timer_.setSingleShot(true);
+  redraw_timer_.setInterval(kRedrawInterval_ms);
+  connect(&redraw_timer_, &QTimer::timeout, this, &MapView::redraw);
+  viewFromSide();
+}
+
+MapView::~MapView() = default;
+
+void MapView::clearMap() {
+  blocks_.clear();
+  surface_ = MapViewBlock{};
+  has_errors_ = false;
+  first_points_ = true;
+  setMesh(Mesh{});
+  setLayer(Layer::Map);
+  redraw();
+}
+
+void MapView::setSurface(MapViewBlock surface) {
+  surface_ = std::move(surface);
+  fill(surface_layer_, {&surface_});
+  render();
+}
+
+void MapView::setLayer(Layer layer) {
+  layer_ = layer;
+  map_layer_.actor->SetVisibility(layer == Layer::Map);
+  surface_layer_.actor->SetVisibility(layer == Layer::Surface);
+  mesh_actor_->SetVisibility(layer == Layer::Mesh);
+  render();
+}
+
+std::vector<const MapViewBlock*> MapView::mapBlocks() const {
+  std::vector<const MapViewBlock*> all;
+  for (const auto& [id, b] : blocks_) {
+    all.push_back(&b);
+  }
+  return all;
+}
+
+void MapView::applyBlocks(std::vector<MapViewBlock> blocks) {
+  for (MapViewBlock& b : blocks) {
+    if (b.points.empty()) {
+      blocks_.erase(b.block);
+    } else {
+      has_errors_ = has_errors_ || !b.errors_m.empty();
+      blocks_[b.block] = std::move(b);
+    }
+  }
+  scheduleRedraw();
+}
+
+void MapView::scheduleRedraw() {
+  if (!redraw_timer_.isActive()) {
+    redraw_timer_.start();
+  }
+}
+
+void MapView::flush() {
+  redraw_timer_.stop();
+  redraw();
+}
+
+std::size_t MapView::mapPointCount() const {
+  std::size_t n = 0;
+  for (const auto& [id, b] : blocks_) {
+    n += b.points.size();
+  }
+  return n;
+}
+
+std::vector<Eigen::Vector3f> MapView::mapPoints() const {
+  std::vector<Eigen::Vector3f> all;
+  all.reserve(mapPointCount());
+  for (const auto& [id, b] : blocks_) {
+    all.insert(all.end(), b.points.begin(), b.points.end());
+  }
+  return all;
+}
+
+void MapView::redraw() {
+  fill(map_layer_, mapBlocks());
+  if (first_points_ && !blocks_.empty()) {
+    first_points_ = false;
+    fitCamera();
+  }
+  render();
+  emit redrawn(mapPointCount());
+}
+
+void MapView::fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks) {
+  vtkIdType n = 0;
+  for (const MapViewBlock* b : blocks) {
+    n += static_cast<vtkIdType>(b->points.size());
+  }
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(n);
+  auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
+  for (const MapViewBlock* b : blocks) {
+    for (const Eigen::Vector3f& p : b->points) {
+      xyz[0] = p.x();
+      xyz[1] = p.y();
+      xyz[2] = p.z();
+      xyz += 3;
+    }
+  }
+  layer.poly->SetPoints(points);
+  layer.poly->SetVerts(pointCells(n, false));
+  colour(layer, blocks);
+}
+
+void MapView::recolour() {
+  colour(map_layer_, mapBlocks());
+  colour(surface_layer_, {&surface_});
+}
+
+void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks) {
+  auto scalars = vtkSmartPointer<vtkFloatArray>::New();
+  scalars->SetNumberOfValues(layer.poly->GetNumberOfPoints());
+  const ColourBy by =
+      colour_by_ == ColourBy::Error && !has_errors_ ? ColourBy::Intensity : colour_by_;
+  vtkIdType i = 0;
+  std::vector<float> intensities;
+  for (const MapViewBlock* b : blocks) {
+    for (std::size_t k = 0; k < b->points.size(); ++k, ++i) {
+      float v = b->values[k];
+      if (by == ColourBy::Depth) {
+        v = b->points[k].z();
+      } else if (by == ColourBy::Error) {
+        v = k < b->errors_m.size() ? b->errors_m[k] : 0.0f;
+      } else {
+        intensities.push_back(v);
+      }
+      scalars->SetValue(i, v);
+    }
+  }
+  double range[2] = {0.0, 1.0};
+  if (by == ColourBy::Error) {
+    range[1] = 0.10;  // the evaluation's "floating point" distance
+  } else if (by == ColourBy::Intensity && !intensities.empty()) {
+    const auto hi = intensities.begin() +
+                    static_cast<std::ptrdiff_t>(0.98 * static_cast<double>(intensities.size() - 1));
+    std::nth_element(intensities.begin(), hi, intensities.end());
+    range[1] = std::max(1.0, static_cast<double>(*hi));
+  } else if (layer.poly->GetNumberOfPoints() > 0) {
+    scalars->GetRange(range);
+  }
+  layer.poly->GetPointData()->SetScalars(scalars);
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(layer.actor->GetMapper());
+  const auto& colours = by == ColourBy::Error ? errorColours() : viridisColours();
+  mapper->SetLookupTable(lookupTable(colours.data(), static_cast<int>(colours.size())));
+  mapper->SetScalarRange(range[0], std::max(range[1], range[0] + 1e-6));
+  mapper->ScalarVisibilityOn();
+}
+
+void MapView::setColourBy(ColourBy by) {
+  colour_by_ = by;
+  recolour();
+  render();
+}
+
+void MapView::setTrack(const std::vector<Eigen::Vector3d>& positions_m) {
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  for (const auto& p : positions_m) {
+    points->InsertNextPoint(p.x(), p.y(), p.z());
+  }
+  poly->SetPoints(points);
+  poly->SetLines(pointCells(static_cast<vtkIdType>(positions_m.size()), true));
+  vtkPolyDataMapper::SafeDownCast(track_actor_->GetMapper())->SetInputData(poly);
+  render();
+}
+
+void MapView::setCurrentFrame(const Eigen::Isometry3d& T_world_sonar, const SonarModel& sonar,
+                              const cv::Mat& image) {
+  const double r0 = sonar.range().min_m;
+  const double r1 = sonar.range().maxRange();
+  const double b0 = sonar.bearings().leftEdge();
+  const double b1 = sonar.bearings().rightEdge();
+  const double half_elev = sonar.verticalAperture() / 2.0;
+  const auto world = [&](double r, double b, double e) {
+    const Eigen::Vector3d p = T_world_sonar * pointFromPolar({r, b, e});
+    return p;
+  };
+  // Frustum: the far surface's outline and the edges from the sonar to its corners.
+  {
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    const Eigen::Vector3d origin = T_world_sonar.translation();
+    const vtkIdType o = points->InsertNextPoint(origin.data());
+    constexpr int kArc = 24;
+    for (double e : {-half_elev, half_elev}) {
+      std::vector<vtkIdType> arc;
+      for (int k = 0; k <= kArc; ++k) {
+        const double b = b0 + (b1 - b0) * k / kArc;
+        arc.push_back(points->InsertNextPoint(world(r1, b, e).data()));
+      }
+      lines->InsertNextCell(static_cast<vtkIdType>(arc.size()), arc.data());
+      const vtkIdType edge_a[2] = {o, arc.front()};
+      const vtkIdType edge_b[2] = {o, arc.back()};
+      lines->InsertNextCell(2, edge_a);
+      lines->InsertNextCell(2, edge_b);
+    }
+    for (double b : {b0, b1}) {
+      const vtkIdType side[2] = {points->InsertNextPoint(world(r1, b, -half_elev).data()),
+                                 points->InsertNextPoint(world(r1, b, half_elev).data())};
+      lines->InsertNextCell(2, side);
+    }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetLines(lines);
+    vtkPolyDataMapper::SafeDownCast(frustum_actor_->GetMapper())->SetInputData(poly);
+  }
+  // Fan: the polar image on the elevation-0 plane, at most 96 x 96 cells.
+  if (!image.empty()) {
+    const int nb = std::min(96, image.cols);
+    const int nr = std::min(96, image.rows);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colours->SetNumberOfComponents(4);
+    double max_value = 1.0;
+    cv::minMaxLoc(image, nullptr, &max_value);
+    const auto& map = copperColours();
+    for (int ir = 0; ir <= nr; ++ir) {
+      const double r = r0 + (r1 - r0) * ir / nr;
+      const int row = sonar.range().binOf(r).value_or(image.rows - 1);
+      for (int ib = 0; ib <= nb; ++ib) {
+        const double b = b0 + (b1 - b0) * ib / nb;
+        const int col = sonar.bearings().beamOf(b).value_or(ib == 0 ? 0 : image.cols - 1);
+        points->InsertNextPoint(world(r, b, 0.0).data());
+        const double v = image.at<float>(row, col) / std::max(1e-6, max_value);
+        const auto& c = map[static_cast<std::size_t>(std::clamp(v, 0.0, 1.0) * (map.size() - 1))];
+        // Empty water is see-through, so the fan does not hide the map behind it.
+        const unsigned char rgba[4] = {c[0], c[1], c[2],
+                                       static_cast<unsigned char>(v > 0.02 ? 230 : 25)};
+        colours->InsertNextTypedTuple(rgba);
+      }
+    }
+    auto quads = vtkSmartPointer<vtkCellArray>::New();
+    for (int ir = 0; ir < nr; ++ir) {
+      for (int ib = 0; ib < nb; ++ib) {
+        const vtkIdType a = ir * (nb + 1) + ib;
+        const vtkIdType q[4] = {a, a + 1, a + nb + 2, a + nb + 1};
+        quads->InsertNextCell(4, q);
+      }
+    }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetPolys(quads);
+    poly->GetPointData()->SetScalars(colours);
+    auto* mapper = vtkPolyDataMapper::SafeDownCast(fan_actor_->GetMapper());
+    mapper->SetInputData(poly);
+    mapper->SetColorModeToDirectScalars();
+  }
+  render();
+}
+
+void MapView::setMesh(const Mesh& mesh) {
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  for (const auto& v : mesh.vertices) {
+    points->InsertNextPoint(v.x(), v.y(), v.z());
+  }
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& t : mesh.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    triangles->InsertNextCell(3, ids);
+  }
+  poly->SetPoints(points);
+  poly->SetPolys(triangles);
+  vtkPolyDataMapper::SafeDownCast(mesh_actor_->GetMapper())->SetInputData(poly);
+  render();
+}
+
+void MapView::fitCamera() {
+  // Fit what the analyst is looking at: the shown points, else everything.
+  const PointLayer& shown = layer_ == Layer::Surface ? surface_layer_ : map_layer_;
+  const vtkSmartPointer<vtkActor>& actor = layer_ == Layer::Mesh ? mesh_actor_ : shown.actor;
+  vtkPolyData* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput());
+  if (poly != nullptr && poly->GetNumberOfPoints() > 0) {
+    gl_->renderer()->ResetCamera(poly->GetBounds());
+  } else {
+    gl_->renderer()->ResetCamera();
+  }
+  gl_->renderer()->ResetCameraClippingRange();
+  render();
+}
+
+void MapView::viewFromTop() {
+  vtkCamera* camera = gl_->renderer()->GetActiveCamera();
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetPosition(0, 0, -1);  // above (NED: up is -z), looking down
+  camera->SetViewUp(1, 0, 0);     // north up, east to the right
+  fitCamera();
+}
+
+void MapView::viewFromSide() {
+  vtkCamera* camera = gl_->renderer()->GetActiveCamera();
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetPosition(-1, 0, 0);  // from the south, looking north
+  camera->SetViewUp(0, 0, -1);    // up is -down, east to the right
+  fitCamera();
+}
+
+void MapView::setOrthographic(bool on) {
+  gl_->renderer()->GetActiveCamera()->SetParallelProjection(on);
+  fitCamera();
+}
+
+bool MapView::orthographic() const {
+  return gl_->renderer()->GetActiveCamera()->GetParallelProjection() != 0;
+}
+
+CameraState MapView::cameraState() const {
+  vtkCamera* camera = gl_->renderer()->GetActiveCamera();
+  CameraState s;
+  camera->GetPosition(s.position.data());
+  camera->GetFocalPoint(s.focal_point.data());
+  camera->GetViewUp(s.view_up.data());
+  s.parallel = camera->GetParallelProjection() != 0;
+  s.parallel_scale = camera->GetParallelScale();
+  s.view_angle_deg = camera->GetViewAngle();
+  return s;
+}
+
+void MapView::setCameraState(const CameraState& s) {
+  vtkCamera* camera = gl_->renderer()->GetActiveCamera();
+  camera->SetPosition(s.position.data());
+  camera->SetFocalPoint(s.focal_point.data());
+  camera->SetViewUp(s.view_up.data());
+  camera->SetParallelProjection(s.parallel);
+  camera->SetParallelScale(s.parallel_scale);
+  camera->SetViewAngle(s.view_angle_deg);
+  first_points_ = false;  // a restored view is kept when points arrive
+  gl_->renderer()->ResetCameraClippingRange();
+  render();
+}
+
+QImage MapView::grabImage() {
+  gl_->renderer()->ResetCameraClippingRange();
+  return gl_->grabFramebuffer();
+}
+
+void MapView::render() {
+  gl_->renderer()->ResetCameraClippingRange();
+  gl_->requestRender();
+}
+
+}  // namespace sonarcarve::widgets

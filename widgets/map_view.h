@@ -1,0 +1,118 @@
+// MapView: the 3D map as it grows, in world NED coordinates (metres), drawn with VTK inside a
+// VtkGlWidget. Three layers, one shown at a time: the carved map (occupied voxels, live), the
+// surface points that occlusion resolution keeps, and the surface mesh; points are coloured by
+// intensity, depth or error against the ground truth. Also the sonar's track, the current
+// frame's frustum and its fan in 3D. Updates carry only the blocks that changed; the view keeps its
+// own copy of every block and redraws at most every `kRedrawInterval_ms`. GUI thread only.
+#pragma once
+
+#include <vtkSmartPointer.h>
+#include <Eigen/Geometry>
+#include <QTimer>
+#include <QWidget>
+#include <map>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "mesh/surface_mesher.h"
+#include "sonar/sonar_model.h"
+
+class vtkActor;
+class vtkPolyData;
+
+namespace sonarcarve::widgets {
+
+class VtkGlWidget;
+
+/// One block of the map as the viewer receives it (a block with no points has become empty).
+struct MapViewBlock {
+  std::size_t block = 0;
+  std::vector<Eigen::Vector3f> points;  ///< voxel centres, world NED
+  std::vector<float> values;            ///< carved intensities
+  std::vector<float> errors_m;          ///< distance to the ground truth, or empty
+};
+
+/// Where the camera is, to save and restore a view (world NED, metres).
+struct CameraState {
+  Eigen::Vector3d position{0, 0, 0};
+  Eigen::Vector3d focal_point{0, 0, 0};
+  Eigen::Vector3d view_up{0, 0, -1};
+  bool parallel = false;
+  double parallel_scale = 1.0;
+  double view_angle_deg = 30.0;
+};
+
+class MapView : public QWidget {
+  Q_OBJECT
+ public:
+  enum class ColourBy { Intensity, Depth, Error };
+  enum class Layer { Map, Surface, Mesh };
+  static constexpr int kRedrawInterval_ms = 100;
+
+  explicit MapView(QWidget* parent = nullptr);
+  ~MapView() override;
+
+  void clearMap();
+  void applyBlocks(std::vector<MapViewBlock> blocks);
+  /// Redraws now instead of at the next redraw tick (for tests and screenshots).
+  void flush();
+  /// Occupied voxels of the carved map as received so far.
+  std::size_t mapPointCount() const;
+  std::vector<Eigen::Vector3f> mapPoints() const;
+  /// The run's surface points (and their errors against the truth, if known).
+  void setSurface(MapViewBlock surface);
+  void setLayer(Layer layer);
+  Layer layer() const { return layer_; }
+  bool hasErrors() const { return has_errors_; }
+
+  void setColourBy(ColourBy by);
+  ColourBy colourBy() const { return colour_by_; }
+  void setTrack(const std::vector<Eigen::Vector3d>& positions_m);
+  /// The current frame: its frustum and its polar image drawn as a fan at elevation 0.
+  void setCurrentFrame(const Eigen::Isometry3d& T_world_sonar, const SonarModel& sonar,
+                       const cv::Mat& image);
+  void setMesh(const Mesh& mesh);
+
+  void fitCamera();
+  void viewFromTop();
+  void viewFromSide();
+  void setOrthographic(bool on);
+  bool orthographic() const;
+  CameraState cameraState() const;
+  void setCameraState(const CameraState& state);
+  /// The 3D view as an image (renders it first).
+  QImage grabImage();
+
+ signals:
+  void redrawn(std::size_t points);
+
+ private:
+  struct PointLayer {
+    vtkSmartPointer<vtkPolyData> poly;
+    vtkSmartPointer<vtkActor> actor;
+  };
+  void redraw();
+  void recolour();
+  void fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks);
+  void colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks);
+  std::vector<const MapViewBlock*> mapBlocks() const;
+  void scheduleRedraw();
+  void render();
+
+  VtkGlWidget* gl_ = nullptr;
+  std::map<std::size_t, MapViewBlock> blocks_;
+  MapViewBlock surface_;
+  Layer layer_ = Layer::Map;
+  ColourBy colour_by_ = ColourBy::Intensity;
+  bool has_errors_ = false;
+  bool first_points_ = true;
+  QTimer redraw_timer_;
+  PointLayer map_layer_;
+  PointLayer surface_layer_;
+  vtkSmartPointer<vtkActor> track_actor_;
+  vtkSmartPointer<vtkActor> frustum_actor_;
+  vtkSmartPointer<vtkActor> fan_actor_;
+  vtkSmartPointer<vtkActor> mesh_actor_;
+};
+
+}  // namespace sonarcarve::widgets
