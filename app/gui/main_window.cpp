@@ -14,12 +14,14 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QProgressBar>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QStyle>
+#include <QThreadPool>
 #include <QTime>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -400,7 +402,7 @@ void MainWindow::updateDetector() {
         noise_model_ = std::make_shared<const NoiseModel>(NoiseModel::load(p.noise_model));
       }
     }
-    detector_ = std::make_unique<Detector>(p.detector, noise_model_, mission_->sonar);
+    detector_ = std::make_shared<const Detector>(p.detector, noise_model_, mission_->sonar);
   } catch (const std::exception& e) {
     log(tr("denoised view unavailable: %1").arg(describe(e)));
   }
@@ -410,32 +412,56 @@ void MainWindow::showFrame(int index) {
   if (!mission_ || index < 0 || static_cast<std::size_t>(index) >= mission_->frames.size()) {
     return;
   }
-  const auto i = static_cast<std::size_t>(index);
-  Frame frame;
-  try {
-    frame = loadFrame(*mission_, i);
-  } catch (const std::exception& e) {
+  // Reading and denoising a frame takes tens of milliseconds: a pool thread does it and the
+  // GUI thread only draws the result, unless the user has asked for another frame since.
+  const std::uint64_t request = ++frame_request_;
+  QThreadPool::globalInstance()->start(
+      [mission = mission_, detector = detector_, index, request, window = QPointer(this)] {
+        auto shown = std::make_shared<ShownFrame>();
+        shown->index = index;
+        try {
+          Frame frame = loadFrame(*mission, static_cast<std::size_t>(index));
+          shown->raw = frame.image;
+          shown->range = widgets::displayRange(frame.image);
+          if (detector) {
+            shown->denoised = detector->apply(frame.image);
+            shown->probability = detector->params().mode == "probability";
+          }
+        } catch (const std::exception& e) {
+          shown->error = describe(e);
+        }
+        QMetaObject::invokeMethod(
+            qApp,
+            [window, shown, request] {
+              MainWindow* w = window.data();
+              if (w != nullptr && w->frame_request_ == request) {
+                w->drawFrame(*shown);
+              }
+            },
+            Qt::QueuedConnection);
+      });
+}
+
+void MainWindow::drawFrame(const ShownFrame& shown) {
+  if (!shown.error.isEmpty()) {
     raw_view_->clearFrame();
     denoised_view_->clearFrame();
-    log(tr("frame %1: %2").arg(index).arg(describe(e)));
+    log(tr("frame %1: %2").arg(shown.index).arg(shown.error));
     return;
   }
-  const widgets::DisplayRange window = widgets::displayRange(frame.image);
-  raw_view_->setFrame(frame.image, window.low, window.high);
-  cv::Mat denoised;
-  if (detector_) {
-    denoised = detector_->apply(frame.image);
-    const bool probability = detector_->params().mode == "probability";
-    denoised_view_->setFrame(denoised, probability ? 0.0f : window.low,
-                             probability ? 1.0f : window.high);
+  raw_view_->setFrame(shown.raw, shown.range.low, shown.range.high);
+  if (!shown.denoised.empty()) {
+    denoised_view_->setFrame(shown.denoised, shown.probability ? 0.0f : shown.range.low,
+                             shown.probability ? 1.0f : shown.range.high);
   } else {
     denoised_view_->clearFrame();
   }
-  const double t = mission_->frames[i].time_s;
+  const double t = mission_->frames[static_cast<std::size_t>(shown.index)].time_s;
   track_view_->setCurrentTime(t);
   if (mission_->nav.covers(t)) {
     map_view_->setCurrentFrame(mission_->nav.T_world_sonar(t, mission_->mounting.T_vehicle_sonar()),
-                               mission_->sonar, denoised.empty() ? frame.image : denoised);
+                               mission_->sonar,
+                               shown.denoised.empty() ? shown.raw : shown.denoised);
   }
 }
 

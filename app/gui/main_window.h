@@ -13,6 +13,7 @@
 
 #include "denoise/detector.h"
 #include "eval/evaluator.h"
+#include "frame_image.h"
 #include "io/mission.h"
 #include "map_view.h"
 #include "pipeline/reconstruction.h"
@@ -88,7 +89,17 @@ class MainWindow : public QMainWindow {
   void wireRunner();
   void showError(const QString& title, const QString& message);
   void log(const QString& line);
+  // A frame read and denoised off the GUI thread, ready to draw.
+  struct ShownFrame {
+    int index = 0;
+    cv::Mat raw;
+    cv::Mat denoised;
+    widgets::DisplayRange range;
+    bool probability = false;
+    QString error;
+  };
   void showFrame(int index);
+  void drawFrame(const ShownFrame& shown);
   void paramsEdited();
   void updateDetector();
   void addRecent(const QString& path);
@@ -100,7 +111,7 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const Mission> mission_;
   std::shared_ptr<const MeshDistance> truth_;
   std::shared_ptr<const ReconstructionResult> result_;
-  std::unique_ptr<Detector> detector_;
+  std::shared_ptr<const Detector> detector_;
   std::shared_ptr<const NoiseModel> noise_model_;
   std::string noise_model_path_;
   ReconstructionParams run_params_;
@@ -123,6 +134,7 @@ class MainWindow : public QMainWindow {
   QAction* follow_action_ = nullptr;
   QTimer follow_timer_;
   long latest_carved_frame_ = -1;
+  std::uint64_t frame_request_ = 0;
   std::chrono::steady_clock::time_point run_started_;
 };
 

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "common/error.h"
+#include "common/thread_pool.h"
 
 namespace sonarcarve::gui {
 
@@ -136,7 +137,10 @@ class JobObserver : public ReconstructionObserver {
 
 }  // namespace
 
-ReconstructionRunner::ReconstructionRunner(QObject* parent) : QObject(parent) {}
+ReconstructionRunner::ReconstructionRunner(QObject* parent) : QObject(parent) {
+  // Carving yields the CPU to the GUI thread and the software renderer (docs/benchmarks.md).
+  ThreadPool::shared().setBackgroundPriority(true);
+}
 
 ReconstructionRunner::~ReconstructionRunner() {
   for (auto& [job, thread] : threads_) {
@@ -175,6 +179,7 @@ int ReconstructionRunner::start(RunRequest request) {
   emit started(job->id);
   const int id = job->id;
   std::thread worker([this, job, id, request = std::move(request)] {
+    lowerThisThreadPriority();
     JobProgress progress(job->cancel, job->mutex, job->resume, job->paused,
                          [this, id](const std::string& stage, std::size_t done, std::size_t total) {
                            post(id, [this, id, stage, done, total] {

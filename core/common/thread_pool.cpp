@@ -2,7 +2,32 @@
 
 #include <algorithm>
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+namespace {
+
+constexpr int kBackgroundNice = 10;
+
+// On Linux the nice value is per thread: PRIO_PROCESS with the thread id changes only it.
+void setThisThreadNice(int nice) {
+  const auto tid = static_cast<id_t>(syscall(SYS_gettid));
+  (void)setpriority(PRIO_PROCESS, tid, nice);  // best effort: raising may be refused
+}
+
+}  // namespace
+
 namespace sonarcarve {
+
+void lowerThisThreadPriority() {
+  setThisThreadNice(kBackgroundNice);
+}
+
+void ThreadPool::setBackgroundPriority(bool background) {
+  std::lock_guard lock(mutex_);
+  background_ = background;
+}
 
 ThreadPool::ThreadPool(unsigned threads) {
   if (threads == 0) {
@@ -48,6 +73,7 @@ void ThreadPool::runChunks() {
 
 void ThreadPool::workerLoop() {
   std::size_t seen_generation = 0;
+  bool niced = false;
   while (true) {
     {
       std::unique_lock lock(mutex_);
@@ -57,6 +83,10 @@ void ThreadPool::workerLoop() {
       }
       seen_generation = generation_;
       ++busy_;
+      if (background_ != niced) {
+        niced = background_;
+        setThisThreadNice(niced ? kBackgroundNice : 0);
+      }
     }
     runChunks();
     {

@@ -12,6 +12,10 @@
 
 namespace sonarcarve {
 
+/// Nice 10 for the calling thread only (Linux threads each have their own nice value); a
+/// no-op where that is not possible.
+void lowerThisThreadPriority();
+
 class ThreadPool {
  public:
   /// `threads` workers in all, the calling thread included; 0 means hardware concurrency.
@@ -30,6 +34,11 @@ class ThreadPool {
   /// A pool shared by the engine, sized to the machine.
   static ThreadPool& shared();
 
+  /// Runs the workers at a lower scheduling priority (Linux nice 10) from their next loop
+  /// on, so that an interactive thread (the GUI's, and the software OpenGL renderer's) gets
+  /// the CPU first while they carve. The calling thread is not changed.
+  void setBackgroundPriority(bool background);
+
  private:
   void workerLoop();
   void runChunks();
@@ -46,6 +55,7 @@ class ThreadPool {
   std::size_t generation_ = 0;
   unsigned busy_ = 0;
   bool stopping_ = false;
+  bool background_ = false;
 };
 
 }  // namespace sonarcarve
