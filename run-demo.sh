@@ -2,7 +2,8 @@
 # Installs what SonarCarve needs, builds it and runs the main job on the bundled demo:
 # simulate the riser inspection (with realistic noise) and a run in empty water, learn the
 # noise model, reconstruct the riser in 3D, evaluate it against the ground truth and draw
-# one of its frames before and after denoising.
+# one of its frames before and after denoising. Where there is a display, the workbench then
+# opens on the demo mission and carves it live (SONARCARVE_NO_GUI=1 skips it).
 set -euo pipefail
 cd "$(dirname "$0")"
 ./packaging/install-deps.sh
@@ -26,3 +27,15 @@ echo "  reconstruction/surface_points.ply   the 3D surface (x, y, z, intensity, 
 echo "  reconstruction/mesh.ply, mesh.stl   its mesh (world NED frame, metres)"
 echo "  reconstruction/map.bt          the carved map (open with octovis)"
 echo "  reconstruction/report.json     timings and accuracy against the ground truth"
+
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -z "${SONARCARVE_NO_GUI:-}" ]; then
+  echo
+  echo "Opening the workbench on the demo mission (close its window to finish)..."
+  # VTK on Debian 12 draws through GLX: under Wayland, Qt must use XWayland.
+  QT_QPA_PLATFORM="${QT_QPA_PLATFORM:-xcb}" ./build/release/app/sonarcarve "$out/mission" \
+    --noise-model "$out/noise.yaml"
+else
+  echo
+  echo "No display: the reconstruction above ran headless. With a display, run"
+  echo "  ./build/release/app/sonarcarve $out/mission --noise-model $out/noise.yaml"
+fi
