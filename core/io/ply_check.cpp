@@ -110,7 +110,7 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
       }
     }
     if (lines < needed) {
-      throw Error(file, "byte " + std::to_string(size),
+      throw Error(file, bytePlace(size),
                   "truncated PLY: expected " + std::to_string(needed) + " element lines, found " +
                       std::to_string(lines));
     }
@@ -126,7 +126,7 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
     needed += e.count * record;
   }
   if (size < body_start + needed) {
-    throw Error(file, "byte " + std::to_string(size),
+    throw Error(file, bytePlace(size),
                 "truncated PLY: the header declares at least " + std::to_string(needed) +
                     " bytes of data after byte " + std::to_string(body_start));
   }
