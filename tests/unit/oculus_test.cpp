@@ -2,12 +2,15 @@
 // README, the other layouts through the test encoder, and every kind of broken input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 #include "common/angles.h"
 #include "common/error.h"
 #include "io/import.h"
+#include "io/mission.h"
 #include "io/oculus_log.h"
 #include "io/oculus_message.h"
 #include "support/oculus_encoder.h"
@@ -164,7 +167,12 @@ INSTANTIATE_TEST_SUITE_P(AllLayouts, OculusLayouts,
                          ::testing::Values(LayoutCase{0, false, false}, LayoutCase{1, false, true},
                                            LayoutCase{1, true, false}, LayoutCase{2, false, false},
                                            LayoutCase{2, true, false}, LayoutCase{2, true, true},
-                                           LayoutCase{2, false, true}));
+                                           LayoutCase{2, false, true}),
+                         [](const auto& param_info) {
+                           const LayoutCase& c = param_info.param;
+                           return "v" + std::to_string(c.version) +
+                                  (c.sixteen_bit ? "_16bit" : "_8bit") + (c.gain ? "_gain" : "");
+                         });
 
 TEST(OculusLogs, ManyMessagesBackToBackWithStatusMessagesSkipped) {
   std::vector<std::vector<std::uint8_t>> parts;
@@ -361,6 +369,48 @@ TEST(OculusRecordings, BrokenRecordingsNameTheByte) {
   compressed[48 + 40 + 10] ^= 0xff;
   expectError([&] { OculusLog::fromBytes(compressed, "z.oculus"); },
               {"z.oculus", "byte 92", "corrupt compressed item"});
+}
+
+TEST(OculusImport, KeepsTheMainGeometryAndStopsWhenCancelled) {
+  test::ScratchDir dir;
+  std::vector<std::vector<std::uint8_t>> parts;
+  for (int i = 0; i < 4; ++i) {
+    OculusPingSpec spec;
+    spec.version = 2;
+    spec.ping_start_time = 20.0 - i;  // backwards: sorted on import
+    spec.n_beams = i == 1 ? 8 : 16;   // one ping after a range change
+    parts.push_back(encodeOculusPing(spec));
+  }
+  const auto log = dir.path() / "mixed.raw";
+  test::writeBytes(log.string(), test::concat(parts));
+  ImportRequest request;
+  request.log = log;
+  request.out = dir.path() / "mission";
+  SilentProgress progress;
+  const ImportReport report = importOculusToMission(request, progress);
+  EXPECT_EQ(report.pings_in_log, 4u);
+  EXPECT_EQ(report.frames_written, 3u);
+  const auto has = [&](const std::string& text) {
+    return std::any_of(report.warnings.begin(), report.warnings.end(),
+                       [&](const std::string& w) { return w.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(has("1 of 4 pings have another range window or bearing table"));
+  EXPECT_TRUE(has("sorted by time"));
+  EXPECT_TRUE(has("stationary"));
+  const Mission mission = readMission(request.out);
+  ASSERT_EQ(mission.frames.size(), 3u);
+  EXPECT_DOUBLE_EQ(mission.frames[0].time_s, 17.0);
+  EXPECT_DOUBLE_EQ(mission.frames[2].time_s, 20.0);
+  EXPECT_EQ(mission.sonar.cols(), 16);
+
+  request.out = dir.path() / "cancelled";
+  progress.cancel();
+  EXPECT_THROW(importOculusToMission(request, progress), Cancelled);
+  EXPECT_FALSE(std::filesystem::exists(request.out / "mission.yaml"));
+  // An existing mission is never overwritten.
+  request.out = dir.path() / "mission";
+  expectError([&] { importOculusToMission(request, *std::make_unique<SilentProgress>()); },
+              {"mission", "output folder exists and is not empty"});
 }
 
 }  // namespace
