@@ -7,10 +7,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <ostream>
 
 #include "fuzz/fuzz_readers.h"
 
 namespace sonarcarve {
+namespace fuzz {
+// Test names and failure messages show the target's name.
+void PrintTo(const Target& target, std::ostream* os) {
+  *os << target.name;
+}
+}  // namespace fuzz
+
 namespace {
 
 class FuzzRegression : public ::testing::TestWithParam<fuzz::Target> {};
