@@ -9,12 +9,15 @@ packages=(
   # core libraries
   libeigen3-dev liboctomap-dev libembree-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
+  zlib1g-dev
   libvtk9-dev
   # GUI
   qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools assimp-utils
 )
+# Fuzzing (the fuzz preset, docs/fuzzing.md) also needs clang-14 and libclang-rt-14-dev; it is
+# not part of the test suite, so they are not installed here.
 
 missing=()
 for p in "${packages[@]}"; do

@@ -14,5 +14,6 @@ void addReconstructCommand(CLI::App& app, int& exit_code);
 void addEvaluateCommand(CLI::App& app, int& exit_code);
 void addNoiseModelCommand(CLI::App& app, int& exit_code);
 void addExportCommand(CLI::App& app, int& exit_code);
+void addImportCommand(CLI::App& app, int& exit_code);
 
 }  // namespace sonarcarve::cli

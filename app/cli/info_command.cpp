@@ -1,12 +1,17 @@
-// `sonarcarve-cli info MISSION [--json]`: what a mission holds and what is wrong with it.
+// `sonarcarve-cli info MISSION|LOG [--json]`: what a mission, or a vendor log before import,
+// holds and what is wrong with it. Both go through the same summary (MissionSummary): a log
+// is summarised as `import` would write it, with a stationary vehicle when it has no
+// navigation.
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 #include "common/angles.h"
+#include "io/import.h"
 #include "io/mission.h"
 #include "io/mission_summary.h"
+#include "io/oculus_log.h"
 
 namespace sonarcarve::cli {
 namespace {
@@ -15,15 +20,13 @@ nlohmann::json vectorJson(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
 }
 
-nlohmann::json summaryJson(const Mission& mission, const MissionSummary& s) {
-  const SonarModel& sonar = mission.sonar;
+nlohmann::json summaryJson(const SonarModel& sonar, const MissionSummary& s) {
   nlohmann::json problems = nlohmann::json::array();
   for (const FrameProblem& p : s.frame_problems) {
     problems.push_back({{"index", p.index}, {"error", p.message}});
   }
   return {
       {"name", s.name},
-      {"folder", mission.folder.string()},
       {"frames",
        {{"count", s.frame_count},
         {"first_time_s", s.first_frame_time_s},
@@ -53,14 +56,12 @@ nlohmann::json summaryJson(const Mission& mission, const MissionSummary& s) {
   };
 }
 
-void printText(const Mission& mission, const MissionSummary& s) {
-  const SonarModel& sonar = mission.sonar;
-  std::printf("Mission      %s (%s)\n", s.name.c_str(), mission.folder.string().c_str());
+void printText(const SonarModel& sonar, const MissionSummary& s) {
   std::printf("Frames       %zu, %.3f s to %.3f s (%.3f s)\n", s.frame_count, s.first_frame_time_s,
               s.last_frame_time_s, s.duration_s);
   std::printf("Sonar        %s: %d beams x %d range bins\n", sonar.id().c_str(), sonar.cols(),
               sonar.rows());
-  std::printf("  range      %.3f to %.3f m, resolution %.4f m\n", sonar.range().min_m,
+  std::printf("  range      %.3f to %.3f m, resolution %.4g m\n", sonar.range().min_m,
               sonar.range().maxRange(), sonar.range().resolution_m);
   std::printf("  bearing    %s table, %.2f to %.2f deg (field of view %.2f deg)\n",
               sonar.bearings().isUniform() ? "uniform" : "explicit",
@@ -80,21 +81,83 @@ void printText(const Mission& mission, const MissionSummary& s) {
   }
 }
 
+std::vector<std::string> linesOf(const std::vector<std::string>& a,
+                                 const std::vector<std::string>& b) {
+  std::vector<std::string> all = a;
+  all.insert(all.end(), b.begin(), b.end());
+  return all;
+}
+
+void infoOnLog(const std::string& path, bool json, double aperture_deg) {
+  const OculusLog log = OculusLog::open(path);
+  const OculusImportPlan plan = planOculusImport(
+      log, 0.0, aperture_deg > 0.0 ? std::optional<double>(aperture_deg) : std::nullopt);
+  const MissionSummary summary =
+      summarizeFrames(std::filesystem::path(path).filename().string(), plan.frame_times_s,
+                      stationaryTrack(plan.frame_times_s));
+  const std::vector<std::string> warnings = linesOf(
+      plan.warnings, {"no navigation in the log: the vehicle is summarised as stationary at the "
+                      "origin"});
+  if (json) {
+    nlohmann::json j = summaryJson(plan.sonar, summary);
+    j["log"] = {{"file", path},
+                {"container", log.container()},
+                {"time_base", log.timeBase()},
+                {"pings", log.pings().size()},
+                {"pings_other_geometry", plan.other_geometry},
+                {"frequency_hz", plan.frequency_hz},
+                {"speed_of_sound_mps", plan.speed_of_sound_mps},
+                {"problems", log.problems()},
+                {"notes", log.notes()},
+                {"warnings", warnings}};
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("Log          %s (%s, %zu pings)\n", path.c_str(), log.container().c_str(),
+              log.pings().size());
+  printText(plan.sonar, summary);
+  std::printf("  frequency  %.1f kHz, sound speed %.2f m/s\n", plan.frequency_hz / 1000.0,
+              plan.speed_of_sound_mps);
+  std::printf("Times        %s\n", log.timeBase().c_str());
+  std::printf("Problems     %zu\n", log.problems().size());
+  for (const std::string& p : log.problems()) {
+    std::printf("  %s\n", p.c_str());
+  }
+  for (const std::string& line : linesOf(log.notes(), warnings)) {
+    std::printf("Note         %s\n", line.c_str());
+  }
+}
+
 }  // namespace
 
 void addInfoCommand(CLI::App& app, int& exit_code) {
-  auto* cmd = app.add_subcommand("info", "Summarise a mission: frames, sonar, navigation, errors");
+  auto* cmd = app.add_subcommand(
+      "info", "Summarise a mission or a vendor log: frames, sonar, navigation, errors");
   auto path = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
-  cmd->add_option("mission", *path, "Mission folder or its mission.yaml")->required();
+  auto aperture = std::make_shared<double>(0.0);
+  cmd->add_option("mission", *path,
+                  "Mission folder or its mission.yaml, or a vendor log (Oculus messages or "
+                  ".oculus recording)")
+      ->required();
   cmd->add_flag("--json", *json, "Print the summary as JSON for scripts");
-  cmd->callback([path, json, &exit_code] {
+  cmd->add_option("--aperture-deg", *aperture,
+                  "Vendor logs: vertical aperture, as for import (default: from the frequency)");
+  cmd->callback([path, json, aperture, &exit_code] {
+    if (looksLikeOculusLog(*path)) {
+      infoOnLog(*path, *json, *aperture);
+      exit_code = 0;
+      return;
+    }
     const Mission mission = readMission(*path);
     const MissionSummary summary = summarize(mission, true);
     if (*json) {
-      std::cout << summaryJson(mission, summary).dump(2) << "\n";
+      nlohmann::json j = summaryJson(mission.sonar, summary);
+      j["folder"] = mission.folder.string();
+      std::cout << j.dump(2) << "\n";
     } else {
-      printText(mission, summary);
+      std::printf("Mission      %s (%s)\n", summary.name.c_str(), mission.folder.string().c_str());
+      printText(mission.sonar, summary);
     }
     exit_code = 0;
   });

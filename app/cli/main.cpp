@@ -5,21 +5,6 @@
 #include "cli/commands.h"
 #include "common/error.h"
 
-namespace {
-
-// Verbs that later work fills in; until then they say so and fail.
-void addPendingCommand(CLI::App& app, const std::string& name, const std::string& description,
-                       int& exit_code) {
-  CLI::App* cmd = app.add_subcommand(name, description + " (not implemented yet)");
-  cmd->allow_extras();
-  cmd->callback([name, &exit_code] {
-    std::cerr << "sonarcarve-cli " << name << ": not implemented yet\n";
-    exit_code = 2;
-  });
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   CLI::App app{"SonarCarve: 3D maps of underwater structures from 2D imaging sonar",
                "sonarcarve-cli"};
@@ -33,7 +18,7 @@ int main(int argc, char** argv) {
   sonarcarve::cli::addEvaluateCommand(app, exit_code);
   sonarcarve::cli::addExportCommand(app, exit_code);
   sonarcarve::cli::addNoiseModelCommand(app, exit_code);
-  addPendingCommand(app, "import", "Import a vendor sonar log into a mission", exit_code);
+  sonarcarve::cli::addImportCommand(app, exit_code);
   sonarcarve::cli::addBenchCommand(app, exit_code);
   try {
     app.parse(argc, argv);

@@ -22,4 +22,8 @@ std::string linePlace(int line) {
   return "line " + std::to_string(line);
 }
 
+std::string bytePlace(std::size_t offset) {
+  return "byte " + std::to_string(offset);
+}
+
 }  // namespace sonarcarve

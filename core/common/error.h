@@ -4,6 +4,7 @@
 // so a user can find and fix the input without reading the code.
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -26,5 +27,7 @@ class Error : public std::runtime_error {
 
 /// "line N" as used in Error places.
 std::string linePlace(int line);
+/// "byte N" (offset from the start of the file) as used in Error places of binary readers.
+std::string bytePlace(std::size_t offset);
 
 }  // namespace sonarcarve

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "common/error.h"
 
@@ -18,11 +19,11 @@ std::string trim(const std::string& s) {
   return s.substr(first, last - first + 1);
 }
 
-std::vector<std::string> splitCells(const std::string& line) {
+std::vector<std::string> splitCells(const std::string& line, char delimiter) {
   std::vector<std::string> cells;
   std::size_t start = 0;
   while (true) {
-    const auto comma = line.find(',', start);
+    const auto comma = line.find(delimiter, start);
     cells.push_back(trim(line.substr(start, comma - start)));
     if (comma == std::string::npos) {
       return cells;
@@ -33,16 +34,26 @@ std::vector<std::string> splitCells(const std::string& line) {
 
 }  // namespace
 
-CsvTable CsvTable::read(const std::filesystem::path& path) {
-  CsvTable table;
-  table.file_ = path.string();
+CsvTable CsvTable::read(const std::filesystem::path& path, const CsvOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw Error(table.file_, "", "cannot open file (missing or unreadable)");
+    throw Error(path.string(), "", "cannot open file (missing or unreadable)");
   }
-  std::string line;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse(text.str(), path.string(), options);
+}
+
+CsvTable CsvTable::parse(std::string_view text, std::string file, const CsvOptions& options) {
+  CsvTable table;
+  table.file_ = std::move(file);
   int line_number = 0;
-  while (std::getline(in, line)) {
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t newline = text.find('\n', start);
+    const std::string line(text.substr(
+        start, newline == std::string_view::npos ? text.size() - start : newline - start));
+    start = newline == std::string_view::npos ? text.size() : newline + 1;
     ++line_number;
     const std::string content = trim(line);
     if (content.empty() || content.front() == '#') {
@@ -51,11 +62,16 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
     if (line.find('\0') != std::string::npos) {
       throw Error(table.file_, linePlace(line_number), "binary data in a text file");
     }
-    auto cells = splitCells(content);
+    auto cells = splitCells(content, options.delimiter);
     if (table.header_.empty()) {
-      table.header_ = std::move(cells);
       table.header_line_ = line_number;
-      continue;
+      if (options.header) {
+        table.header_ = std::move(cells);
+        continue;
+      }
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        table.header_.push_back(std::to_string(i));
+      }
     }
     if (cells.size() != table.header_.size()) {
       throw Error(table.file_, linePlace(line_number),
@@ -65,7 +81,9 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
     table.rows_.push_back(Row{line_number, std::move(cells)});
   }
   if (table.header_.empty()) {
-    throw Error(table.file_, "", "file is empty: expected a header line of column names");
+    throw Error(table.file_, "",
+                options.header ? "file is empty: expected a header line of column names"
+                               : "file is empty: expected lines of values");
   }
   return table;
 }

@@ -6,9 +6,16 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sonarcarve {
+
+struct CsvOptions {
+  char delimiter = ',';
+  /// Without a header line, the columns are named by their 0-based index: "0", "1", ...
+  bool header = true;
+};
 
 class CsvTable {
  public:
@@ -19,7 +26,9 @@ class CsvTable {
 
   /// Reads the whole file. Throws Error if it is missing, empty (no header) or a row has a
   /// different number of cells than the header.
-  static CsvTable read(const std::filesystem::path& path);
+  static CsvTable read(const std::filesystem::path& path, const CsvOptions& options = {});
+  /// The same from text in memory; `file` names it in messages.
+  static CsvTable parse(std::string_view text, std::string file, const CsvOptions& options = {});
 
   const std::string& file() const { return file_; }
   const std::vector<std::string>& header() const { return header_; }

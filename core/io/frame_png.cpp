@@ -55,7 +55,7 @@ cv::Mat readFramePng(const std::filesystem::path& path) {
   }
   // libpng decodes a cut-off file as far as it goes; a complete PNG ends with its IEND chunk.
   if (bytes.size() < 16 || !std::equal(std::begin(kPngEnd), std::end(kPngEnd), bytes.end() - 8)) {
-    throw Error(file, "byte " + std::to_string(bytes.size()),
+    throw Error(file, bytePlace(bytes.size()),
                 "truncated PNG: expected the IEND chunk at the end of the file");
   }
   cv::Mat decoded;

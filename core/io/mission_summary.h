@@ -30,5 +30,9 @@ struct MissionSummary {
 
 /// Summarises a mission; with `check_frames` every frame image is read and verified.
 MissionSummary summarize(const Mission& mission, bool check_frames);
+/// The same figures from frame times and a track, for data that is not (yet) a mission
+/// folder, such as a vendor log (frame_problems is left empty).
+MissionSummary summarizeFrames(std::string name, const std::vector<double>& frame_times_s,
+                               const NavTrack& nav);
 
 }  // namespace sonarcarve

@@ -1,5 +1,6 @@
 #include "io/ply_check.h"
 
+#include <charconv>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -26,6 +27,11 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw Error(file, "", "cannot open PLY file");
+  }
+  std::error_code size_error;
+  const std::uint64_t file_size = std::filesystem::file_size(path, size_error);
+  if (size_error) {
+    throw Error(file, "", "cannot open PLY file: " + size_error.message());
   }
   std::string line;
   int line_number = 0;
@@ -54,8 +60,17 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
       }
     } else if (keyword == "element") {
       PlyElement e;
-      if (!(words >> e.name >> e.count)) {
+      std::string count;
+      if (!(words >> e.name >> count)) {
         fail("expected 'element NAME COUNT'");
+      }
+      // Every element takes at least a byte of the body: a count above the file's size is
+      // corrupt (and would overflow the size checks below).
+      const char* end = count.data() + count.size();
+      const auto [ptr, ec] = std::from_chars(count.data(), end, e.count);
+      if (ec != std::errc() || ptr != end || e.count > file_size) {
+        fail("element '" + e.name + "': count '" + count +
+             "' is not a whole number within the file's size");
       }
       elements.push_back(e);
     } else if (keyword == "property") {
@@ -97,7 +112,7 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
   }
   const auto body_start = static_cast<std::uint64_t>(in.tellg());
   header.body_offset = body_start;
-  const std::uint64_t size = std::filesystem::file_size(path);
+  const std::uint64_t size = file_size;
   if (format == "ascii") {
     std::uint64_t needed = 0;
     for (const auto& e : elements) {
@@ -110,7 +125,7 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
       }
     }
     if (lines < needed) {
-      throw Error(file, "byte " + std::to_string(size),
+      throw Error(file, bytePlace(size),
                   "truncated PLY: expected " + std::to_string(needed) + " element lines, found " +
                       std::to_string(lines));
     }
@@ -126,7 +141,7 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
     needed += e.count * record;
   }
   if (size < body_start + needed) {
-    throw Error(file, "byte " + std::to_string(size),
+    throw Error(file, bytePlace(size),
                 "truncated PLY: the header declares at least " + std::to_string(needed) +
                     " bytes of data after byte " + std::to_string(body_start));
   }

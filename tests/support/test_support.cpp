@@ -21,6 +21,10 @@ ScratchDir::~ScratchDir() {
   std::filesystem::remove_all(path_, ec);
 }
 
+std::filesystem::path testData(const std::string& relative) {
+  return std::filesystem::path(SONARCARVE_TEST_DATA_DIR) / relative;
+}
+
 std::filesystem::path exampleMission() {
   return std::filesystem::path(SONARCARVE_RESOURCE_DIR) / "example_mission";
 }

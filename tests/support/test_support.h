@@ -1,8 +1,13 @@
 // Helpers shared by the tests: scratch folders, the example mission, small sonar models.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include "common/error.h"
 
 #include "sonar/sonar_model.h"
 
@@ -21,6 +26,8 @@ class ScratchDir {
   std::filesystem::path path_;
 };
 
+/// A file under tests/data/ (fixtures kept in the repository).
+std::filesystem::path testData(const std::string& relative);
 /// The example mission shipped in resources/.
 std::filesystem::path exampleMission();
 /// Copies the example mission into `dir`/name and returns the copy's folder.
@@ -34,6 +41,20 @@ SonarModel paperSonar();
 SonarModel nonUniformSonar();
 
 std::string readText(const std::filesystem::path& path);
+
+/// `run` must throw a sonarcarve::Error whose text holds every fragment.
+template <typename Run>
+void expectError(Run run, const std::vector<std::string>& fragments) {
+  try {
+    run();
+    ADD_FAILURE() << "no error; expected one with '" << fragments.front() << "'";
+  } catch (const Error& e) {
+    for (const auto& f : fragments) {
+      EXPECT_NE(std::string(e.what()).find(f), std::string::npos)
+          << "'" << f << "' not in: " << e.what();
+    }
+  }
+}
 void writeText(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace sonarcarve::test

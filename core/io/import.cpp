@@ -1,0 +1,183 @@
+#include "io/import.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <tuple>
+
+#include "common/angles.h"
+#include "common/error.h"
+#include "io/mission_writer.h"
+#include "io/sonar_yaml.h"
+#include "io/yaml_fields.h"
+
+namespace sonarcarve {
+namespace {
+
+// The geometry a ping shares with the others of one mission.
+using GeometryKey = std::tuple<int, int, double, std::vector<double>>;
+GeometryKey geometryOf(const OculusPing& p) {
+  return {p.n_ranges, p.n_beams, p.range_resolution_m, p.bearings_rad};
+}
+
+std::string kilohertz(double hz) {
+  return std::isfinite(hz) && hz > 0.0 && hz < 1e9
+             ? std::to_string(static_cast<long>(std::lround(hz / 1000.0))) + "khz"
+             : "unknown";
+}
+
+}  // namespace
+
+double oculusVerticalApertureDeg(const OculusPing& ping) {
+  return ping.frequency_hz > 0.0 && ping.frequency_hz < 1.5e6 ? 20.0 : 12.0;
+}
+
+SonarModel sonarModelFromPing(const OculusPing& ping, std::optional<double> aperture_deg) {
+  return SonarModel("oculus-" + kilohertz(ping.frequency_hz),
+                    RangeBins{0.0, ping.range_resolution_m, ping.n_ranges},
+                    BearingTable::fromCentres(ping.bearings_rad),
+                    degToRad(aperture_deg.value_or(oculusVerticalApertureDeg(ping))));
+}
+
+OculusImportPlan planOculusImport(const OculusLog& log, double time_offset_s,
+                                  std::optional<double> aperture_deg) {
+  const auto& pings = log.pings();
+  // The most common geometry (the first one on a tie).
+  std::map<GeometryKey, std::size_t> counts;
+  for (const auto& entry : pings) {
+    ++counts[geometryOf(entry.ping)];
+  }
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < pings.size(); ++i) {
+    if (counts[geometryOf(pings[i].ping)] > counts[geometryOf(pings[best].ping)]) {
+      best = i;
+    }
+  }
+  const GeometryKey key = geometryOf(pings[best].ping);
+  std::vector<std::size_t> used;
+  for (std::size_t i = 0; i < pings.size(); ++i) {
+    if (geometryOf(pings[i].ping) == key) {
+      used.push_back(i);
+    }
+  }
+  const OculusPing& first = pings[used.front()].ping;
+  OculusImportPlan plan{sonarModelFromPing(first, aperture_deg),
+                        {},
+                        {},
+                        pings.size() - used.size(),
+                        first.frequency_hz,
+                        first.speed_of_sound_mps,
+                        {}};
+  if (plan.other_geometry > 0) {
+    plan.warnings.push_back(std::to_string(plan.other_geometry) + " of " +
+                            std::to_string(pings.size()) +
+                            " pings have another range window or bearing table than the main "
+                            "one (" +
+                            std::to_string(first.n_beams) + " beams x " +
+                            std::to_string(first.n_ranges) + " ranges) and are left out");
+  }
+  if (!std::is_sorted(used.begin(), used.end(), [&](std::size_t a, std::size_t b) {
+        return pings[a].time_s < pings[b].time_s;
+      })) {
+    std::stable_sort(used.begin(), used.end(), [&](std::size_t a, std::size_t b) {
+      return pings[a].time_s < pings[b].time_s;
+    });
+    plan.warnings.push_back("ping times are not in file order: frames are sorted by time");
+  }
+  for (std::size_t i : used) {
+    plan.frame_times_s.push_back(pings[i].time_s + time_offset_s);
+  }
+  if (!aperture_deg) {
+    plan.warnings.push_back("vertical aperture " +
+                            shortestNumber(oculusVerticalApertureDeg(first)) +
+                            " deg assumed from the frequency (" + kilohertz(first.frequency_hz) +
+                            "); override it with --aperture-deg if your model differs");
+  }
+  plan.pings = std::move(used);
+  return plan;
+}
+
+NavTrack stationaryTrack(const std::vector<double>& times_s) {
+  const auto [lo, hi] = std::minmax_element(times_s.begin(), times_s.end());
+  NavSample start, end;
+  start.time_s = (times_s.empty() ? 0.0 : *lo) - 1.0;
+  end.time_s = (times_s.empty() ? 0.0 : *hi) + 1.0;
+  return NavTrack({start, end});
+}
+
+Mounting readMountingYaml(const std::filesystem::path& path) {
+  const YamlFields fields(path.string());
+  const YAML::Node root = fields.load();
+  return root["mounting"] ? mountingFromYaml(root["mounting"], fields)
+                          : mountingFromYaml(root, fields, "mounting");
+}
+
+ImportReport importOculusToMission(const ImportRequest& request, Progress& progress) {
+  progress.report("reading the log", 0, 1);
+  const OculusLog log = OculusLog::open(request.log);
+  OculusImportPlan plan =
+      planOculusImport(log, request.time_offset_s, request.vertical_aperture_deg);
+  ImportReport report;
+  report.mission = request.out;
+  report.container = log.container();
+  report.time_base = log.timeBase();
+  report.pings_in_log = log.pings().size();
+  report.notes = log.notes();
+  report.problems = log.problems();
+  report.warnings = plan.warnings;
+
+  // Everything that can fail on the user's input is read before the first file is written.
+  const Mounting mounting =
+      request.mounting_yaml.empty() ? Mounting{} : readMountingYaml(request.mounting_yaml);
+  std::optional<NavTrack> nav;
+  if (request.nav_csv.empty()) {
+    nav = stationaryTrack(plan.frame_times_s);
+    report.warnings.push_back(
+        "no navigation given: the vehicle is stationary at the origin with zero attitude");
+  } else {
+    nav = importNavCsv(request.nav_csv, request.nav_mapping);
+  }
+  for (double t : plan.frame_times_s) {
+    report.frames_outside_nav += nav->covers(t) ? 0 : 1;
+  }
+  if (report.frames_outside_nav > 0) {
+    report.warnings.push_back(std::to_string(report.frames_outside_nav) +
+                              " frames lie outside the navigation's time span (check the time "
+                              "offset): they cannot be placed in the world");
+  }
+  std::error_code ec;
+  if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_empty(request.out, ec)) {
+    throw Error(request.out.string(), "",
+                "output folder exists and is not empty: choose a new folder");
+  }
+
+  const std::string name = request.name.empty() ? request.log.filename().string() : request.name;
+  MissionWriter writer(request.out, name, plan.sonar, mounting);
+  const std::size_t total = plan.pings.size();
+  for (std::size_t k = 0; k < total; ++k) {
+    if (progress.cancelled()) {
+      throw Cancelled();
+    }
+    progress.report("writing frames", k, total);
+    Frame frame;
+    frame.time_s = plan.frame_times_s[k];
+    frame.sonar_id = plan.sonar.id();
+    try {
+      frame.image = log.decode(plan.pings[k]).image;
+    } catch (const Error& e) {
+      report.problems.push_back(std::string(e.what()) + " (frame skipped)");
+      continue;
+    }
+    writer.addFrame(frame);
+  }
+  if (writer.frameCount() == 0) {
+    throw Error(request.log.string(), "", "no frame could be decoded");
+  }
+  writer.finish(*nav);
+  progress.report("writing frames", total, total);
+  report.frames_written = writer.frameCount();
+  return report;
+}
+
+}  // namespace sonarcarve

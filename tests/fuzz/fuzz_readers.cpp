@@ -1,0 +1,126 @@
+#include "fuzz/fuzz_readers.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string_view>
+
+#include "common/error.h"
+#include "io/frame_png.h"
+#include "io/mission.h"
+#include "io/nav_import.h"
+#include "io/oculus_log.h"
+#include "io/ply_check.h"
+#include "io/point_cloud_ply.h"
+
+namespace sonarcarve::fuzz {
+namespace {
+
+// A scratch folder for this process (in memory where /dev/shm exists), kept between inputs
+// and removed at exit.
+struct ScratchFolder {
+  ScratchFolder() {
+    const std::filesystem::path shm = "/dev/shm";
+    const auto base =
+        std::filesystem::is_directory(shm) ? shm : std::filesystem::temp_directory_path();
+    path = base / ("sonarcarve-fuzz-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  std::filesystem::path path;
+};
+
+const std::filesystem::path& scratch() {
+  static const ScratchFolder folder;
+  return folder.path;
+}
+
+void write(const std::filesystem::path& path, std::string_view bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::string_view text(std::span<const std::uint8_t> bytes) {
+  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
+}
+
+// The parts of `bytes` between NUL bytes; missing parts are empty.
+std::vector<std::string_view> parts(std::span<const std::uint8_t> bytes, std::size_t count) {
+  std::vector<std::string_view> out;
+  std::string_view rest = text(bytes);
+  for (std::size_t i = 0; i + 1 < count; ++i) {
+    const auto nul = rest.find('\0');
+    out.push_back(rest.substr(0, nul));
+    rest = nul == std::string_view::npos ? std::string_view{} : rest.substr(nul + 1);
+  }
+  out.push_back(rest);
+  return out;
+}
+
+template <typename Run>
+void acceptingErrors(Run run) {
+  try {
+    run();
+  } catch (const Error&) {
+    // A clear rejection is a correct answer to a broken file.
+  }
+}
+
+}  // namespace
+
+void oculusLog(std::span<const std::uint8_t> bytes) {
+  acceptingErrors([&] {
+    const OculusLog log = OculusLog::fromBytes({bytes.begin(), bytes.end()}, "fuzz.raw");
+    for (std::size_t i = 0; i < log.pings().size(); ++i) {
+      acceptingErrors([&] { log.decode(i); });
+    }
+  });
+  acceptingErrors([&] { decodeOculusPing(bytes, 0, "fuzz.raw"); });
+}
+
+void mission(std::span<const std::uint8_t> bytes) {
+  const auto files = parts(bytes, 3);
+  const auto dir = scratch() / "mission";
+  std::filesystem::create_directories(dir);
+  write(dir / "mission.yaml", files[0]);
+  write(dir / "nav.csv", files[1]);
+  write(dir / "frames.csv", files[2]);
+  acceptingErrors([&] { readMission(dir); });
+}
+
+void framePng(std::span<const std::uint8_t> bytes) {
+  const auto path = scratch() / "frame.png";
+  write(path, text(bytes));
+  acceptingErrors([&] { readFramePng(path); });
+}
+
+void plyPointCloud(std::span<const std::uint8_t> bytes) {
+  const auto path = scratch() / "cloud.ply";
+  write(path, text(bytes));
+  acceptingErrors([&] { checkPlyFile(path); });
+  acceptingErrors([&] { readPointCloudPly(path); });
+}
+
+void navImport(std::span<const std::uint8_t> bytes) {
+  const auto files = parts(bytes, 2);
+  acceptingErrors([&] {
+    const NavMapping mapping = parseNavMapping(files[0], "fuzz-map.yaml");
+    acceptingErrors([&] { importNavCsvText(files[1], "fuzz-nav.csv", mapping); });
+  });
+  acceptingErrors([&] { importNavCsvText(files[1], "fuzz-nav.csv", NavMapping{}); });
+}
+
+const std::vector<Target>& targets() {
+  static const std::vector<Target> all = {{"oculus", oculusLog},
+                                          {"mission", mission},
+                                          {"frame_png", framePng},
+                                          {"ply", plyPointCloud},
+                                          {"nav_import", navImport}};
+  return all;
+}
+
+}  // namespace sonarcarve::fuzz

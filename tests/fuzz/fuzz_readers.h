@@ -1,0 +1,35 @@
+// The readers under fuzzing, one entry point each: `bytes` is handed to the reader (split
+// into files where the reader reads several, written to a scratch folder where it reads
+// paths). Each returns normally when the reader accepts the input or rejects it with a
+// sonarcarve::Error; anything else (another exception, a crash, a sanitizer report) is a bug.
+// The libFuzzer targets (SONARCARVE_FUZZ) and the regression replay unit test share them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace sonarcarve::fuzz {
+
+using Reader = void (*)(std::span<const std::uint8_t> bytes);
+
+/// Oculus message streams and ViewPoint recordings: OculusLog, then every ping decoded.
+void oculusLog(std::span<const std::uint8_t> bytes);
+/// Mission format v1: mission.yaml, nav.csv and frames.csv separated by NUL bytes.
+void mission(std::span<const std::uint8_t> bytes);
+/// A frame image (readFramePng).
+void framePng(std::span<const std::uint8_t> bytes);
+/// A PLY file: checkPlyFile, then readPointCloudPly.
+void plyPointCloud(std::span<const std::uint8_t> bytes);
+/// Navigation import: a mapping YAML and a CSV separated by a NUL byte.
+void navImport(std::span<const std::uint8_t> bytes);
+
+struct Target {
+  std::string name;  ///< also the folder of its corpus: tests/fuzz/corpus/<name>
+  Reader reader;
+};
+const std::vector<Target>& targets();
+
+}  // namespace sonarcarve::fuzz
