@@ -16,6 +16,7 @@
 #include <QPlainTextEdit>
 #include <QPointer>
 #include <QProgressBar>
+#include <QProgressDialog>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
@@ -31,7 +32,9 @@
 #include "fan_view.h"
 #include "frame_image.h"
 #include "frame_timeline.h"
+#include "import_dialog.h"
 #include "io/atomic_file.h"
+#include "io/oculus_log.h"
 #include "map_view.h"
 #include "mesh/mesh_export.h"
 #include "occlusion/surface_points.h"
@@ -104,7 +107,12 @@ MainWindow::MainWindow(QWidget* parent)
   updateRunActions();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  if (import_thread_.joinable()) {
+    *import_cancel_ = true;
+    import_thread_.join();
+  }
+}
 
 void MainWindow::buildDocks() {
   params_panel_ = new widgets::ParamsPanel;
@@ -142,6 +150,14 @@ void MainWindow::buildMenus() {
                       openMission(dir);
                     }
                   });
+  file->addAction(tr("&Import a sonar log…"), QKeySequence(tr("Ctrl+I")), this, [this] {
+    const QString log =
+        QFileDialog::getOpenFileName(this, tr("Import a sonar log"), QString(),
+                                     tr("Oculus logs (*.oculus *.raw *.bin);;All files (*)"));
+    if (!log.isEmpty()) {
+      importWithDialog(log);
+    }
+  });
   recent_menu_ = file->addMenu(tr("Open &recent"));
   fillRecentMenu();
   file->addSeparator();
@@ -217,6 +233,13 @@ void MainWindow::buildMenus() {
   view->addAction(tr("&Fit"), this, [this] { map_view_->fitCamera(); });
   view->addAction(tr("&Top"), this, [this] { map_view_->viewFromTop(); });
   view->addAction(tr("&Side"), this, [this] { map_view_->viewFromSide(); });
+  QAction* grey = view->addAction(tr("&Grey sonar images"));
+  grey->setCheckable(true);
+  connect(grey, &QAction::toggled, this, [this](bool on) {
+    for (auto* fan : {raw_view_, denoised_view_}) {
+      fan->setColourMap(on ? widgets::ColourMap::Grey : widgets::ColourMap::Copper);
+    }
+  });
   QAction* ortho = view->addAction(tr("&Orthographic"));
   ortho->setCheckable(true);
   connect(ortho, &QAction::toggled, this, [this](bool on) { map_view_->setOrthographic(on); });
@@ -394,14 +417,45 @@ void MainWindow::updateDetector() {
     return;
   }
   const ReconstructionParams p = params_panel_->params();
-  try {
-    if (p.noise_model != noise_model_path_) {
-      noise_model_.reset();
-      noise_model_path_ = p.noise_model;
-      if (!p.noise_model.empty()) {
-        noise_model_ = std::make_shared<const NoiseModel>(NoiseModel::load(p.noise_model));
-      }
+  if (p.noise_model != noise_model_path_) {
+    // A noise model is megabytes of YAML: a pool thread reads it, then the frame is redrawn.
+    noise_model_.reset();
+    noise_model_path_ = p.noise_model;
+    if (!p.noise_model.empty()) {
+      const std::uint64_t request = ++noise_model_request_;
+      QThreadPool::globalInstance()->start(
+          [path = p.noise_model, request, window = QPointer(this)] {
+            std::shared_ptr<const NoiseModel> model;
+            QString error;
+            try {
+              model = std::make_shared<const NoiseModel>(NoiseModel::load(path));
+            } catch (const std::exception& e) {
+              error = describe(e);
+            }
+            QMetaObject::invokeMethod(
+                qApp,
+                [window, model, error, request] {
+                  MainWindow* w = window.data();
+                  if (w == nullptr || w->noise_model_request_ != request) {
+                    return;
+                  }
+                  if (!error.isEmpty()) {
+                    w->log(tr("denoised view unavailable: %1").arg(error));
+                    return;
+                  }
+                  w->noise_model_ = model;
+                  w->updateDetector();
+                  w->showFrame(w->timeline_->currentFrame());
+                },
+                Qt::QueuedConnection);
+          });
+      return;
     }
+  }
+  if (!p.noise_model.empty() && !noise_model_) {
+    return;  // still loading
+  }
+  try {
     detector_ = std::make_shared<const Detector>(p.detector, noise_model_, mission_->sonar);
   } catch (const std::exception& e) {
     log(tr("denoised view unavailable: %1").arg(describe(e)));
@@ -677,6 +731,107 @@ void MainWindow::fillRecentMenu() {
   recent_menu_->setEnabled(!recent.isEmpty());
 }
 
+void MainWindow::importWithDialog(const QString& log) {
+  ImportDialog dialog(log, this);
+  if (dialog.exec() != QDialog::Accepted) {
+    return;
+  }
+  try {
+    importLog(dialog.request());
+  } catch (const std::exception& e) {
+    showError(tr("Cannot import"), describe(e));
+  }
+}
+
+void MainWindow::importLog(const ImportRequest& request) {
+  if (import_thread_.joinable()) {
+    *import_cancel_ = true;
+    import_thread_.join();
+  }
+  auto* dialog = new QProgressDialog(
+      tr("Importing %1…").arg(QString::fromStdString(request.log.filename().string())),
+      tr("Cancel"), 0, 100, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->setMinimumDuration(500);
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  import_cancel_ = cancel;
+  connect(dialog, &QProgressDialog::canceled, this, [cancel] { *cancel = true; });
+  const QPointer<QProgressDialog> progress_dialog(dialog);
+  const QPointer<MainWindow> window(this);
+  // Queued onto the GUI thread; dropped if the window is gone by then.
+  const auto post = [window](std::function<void(MainWindow&)> deliver) {
+    QMetaObject::invokeMethod(
+        qApp,
+        [window, deliver = std::move(deliver)] {
+          if (MainWindow* w = window.data()) {
+            deliver(*w);
+          }
+        },
+        Qt::QueuedConnection);
+  };
+  class ImportProgress : public Progress {
+   public:
+    ImportProgress(std::shared_ptr<std::atomic<bool>> cancel, QPointer<QProgressDialog> dialog)
+        : cancel_(std::move(cancel)), dialog_(std::move(dialog)) {}
+    void report(const std::string&, std::size_t done, std::size_t total) override {
+      const int percent = total > 0 ? static_cast<int>(100 * done / total) : 0;
+      QMetaObject::invokeMethod(
+          qApp,
+          [dialog = dialog_, percent] {
+            if (QProgressDialog* d = dialog.data()) {
+              d->setValue(percent);
+            }
+          },
+          Qt::QueuedConnection);
+    }
+    bool cancelled() const override { return cancel_->load(); }
+
+   private:
+    std::shared_ptr<std::atomic<bool>> cancel_;
+    QPointer<QProgressDialog> dialog_;
+  };
+  log(tr("importing %1 into %2")
+          .arg(QString::fromStdString(request.log.string()),
+               QString::fromStdString(request.out.string())));
+  import_thread_ = std::thread([request, cancel, progress_dialog, post] {
+    ImportProgress progress(cancel, progress_dialog);
+    std::function<void(MainWindow&)> deliver;
+    try {
+      const ImportReport report = importOculusToMission(request, progress);
+      deliver = [report, progress_dialog](MainWindow& w) {
+        if (QProgressDialog* d = progress_dialog.data()) {
+          d->close();
+        }
+        w.log(tr("imported %1 frames of %2 pings (%3)")
+                  .arg(report.frames_written)
+                  .arg(report.pings_in_log)
+                  .arg(QString::fromStdString(report.container)));
+        for (const auto& lines : {report.warnings, report.problems, report.notes}) {
+          for (const std::string& line : lines) {
+            w.log(QString::fromStdString(line));
+          }
+        }
+        const bool ok = w.openMission(QString::fromStdString(report.mission.string()));
+        emit w.importFinished(ok);
+      };
+    } catch (const Cancelled&) {
+      deliver = [](MainWindow& w) {
+        w.log(tr("import cancelled: the folder has no mission.yaml and is not a mission"));
+        emit w.importFinished(false);
+      };
+    } catch (const std::exception& e) {
+      deliver = [message = describe(e), progress_dialog](MainWindow& w) {
+        if (QProgressDialog* d = progress_dialog.data()) {
+          d->close();
+        }
+        w.showError(tr("Cannot import the log"), message);
+        emit w.importFinished(false);
+      };
+    }
+    post(std::move(deliver));
+  });
+}
+
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
   if (event->mimeData()->hasUrls()) {
     event->acceptProposedAction();
@@ -691,6 +846,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
   const QString path = urls.front().toLocalFile();
   if (path.endsWith(".sonarcarve")) {
     openSession(path);
+  } else if (QFileInfo(path).isFile() && looksLikeOculusLog(path.toStdString())) {
+    importWithDialog(path);
   } else {
     openMission(path);
   }

@@ -7,13 +7,16 @@
 
 #include <QMainWindow>
 #include <QTimer>
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <thread>
 
 #include "denoise/detector.h"
 #include "eval/evaluator.h"
 #include "frame_image.h"
+#include "io/import.h"
 #include "io/mission.h"
 #include "map_view.h"
 #include "pipeline/reconstruction.h"
@@ -50,6 +53,11 @@ class MainWindow : public QMainWindow {
   /// after telling the user why, if it cannot be read.
   bool openMission(const QString& path);
   bool openSession(const QString& file);
+  /// Imports a vendor log into a mission folder on a worker thread (with a cancellable
+  /// progress dialog), then opens it; emits importFinished(ok).
+  void importLog(const ImportRequest& request);
+  /// Asks for the import's choices (navigation, mounting, time offset), then imports.
+  void importWithDialog(const QString& log);
   bool saveSession(const QString& file);
   bool loadParams(const QString& file);
   bool saveParams(const QString& file);
@@ -76,6 +84,7 @@ class MainWindow : public QMainWindow {
  signals:
   void runFinished(std::shared_ptr<const ReconstructionResult> result);
   void runFailed(const QString& message);
+  void importFinished(bool ok);
 
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
@@ -135,6 +144,9 @@ class MainWindow : public QMainWindow {
   QTimer follow_timer_;
   long latest_carved_frame_ = -1;
   std::uint64_t frame_request_ = 0;
+  std::uint64_t noise_model_request_ = 0;
+  std::thread import_thread_;
+  std::shared_ptr<std::atomic<bool>> import_cancel_;
   std::chrono::steady_clock::time_point run_started_;
 };
 

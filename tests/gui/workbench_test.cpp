@@ -215,6 +215,34 @@ class WorkbenchTest : public QObject {
     QCOMPARE(fs::file_size(bt), before);
   }
 
+  // A vendor log is imported on a worker thread, then opened like any mission.
+  void oculusLogIsImportedAndOpened() {
+    MainWindow window;
+    window.show();
+    QSignalSpy imported(&window, &MainWindow::importFinished);
+    sonarcarve::ImportRequest request;
+    request.log = fs::path(SONARCARVE_TEST_DATA_DIR) / "oculus" / "one_ping_8bit.raw";
+    request.out = scratch_->path() / "oculus-mission";
+    window.importLog(request);
+    QVERIFY(imported.wait(60000));
+    QCOMPARE(imported.front().front().toBool(), true);
+    QVERIFY(window.mission());
+    QCOMPARE(window.mission()->frames.size(), std::size_t{1});
+    QCOMPARE(window.mission()->sonar.cols(), 256);
+    QCOMPARE(window.mission()->sonar.rows(), 703);
+    QVERIFY(window.logText().contains("stationary"));
+    // A file that is no Oculus log: a message, and the window carries on.
+    const fs::path junk = scratch_->path() / "junk.raw";
+    sonarcarve::test::writeText(junk, "not a sonar log");
+    request.log = junk;
+    request.out = scratch_->path() / "junk-mission";
+    window.importLog(request);
+    QVERIFY(imported.wait(60000));
+    QCOMPARE(imported.back().front().toBool(), false);
+    QVERIFY(window.logText().contains("junk.raw"));
+    QCOMPARE(window.mission()->frames.size(), std::size_t{1});  // the open mission stays
+  }
+
   void cleanupTestCase() { scratch_.reset(); }
 
  private:
