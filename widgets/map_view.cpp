@@ -16,6 +16,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "colour_maps.h"
 #include "vtk_gl_widget.h"
@@ -125,7 +126,7 @@ void MapView::clearMap() {
 
 void MapView::setSurface(MapViewBlock surface) {
   surface_ = std::move(surface);
-  fill(surface_layer_, {&surface_});
+  fill(surface_layer_, {&surface_}, std::numeric_limits<std::size_t>::max());
   render();
 }
 
@@ -186,7 +187,7 @@ std::vector<Eigen::Vector3f> MapView::mapPoints() const {
 }
 
 void MapView::redraw() {
-  fill(map_layer_, mapBlocks());
+  fill(map_layer_, mapBlocks(), kMaxDrawnMapPoints);
   if (first_points_ && !blocks_.empty()) {
     first_points_ = false;
     fitCamera();
@@ -195,42 +196,53 @@ void MapView::redraw() {
   emit redrawn(mapPointCount());
 }
 
-void MapView::fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks) {
-  vtkIdType n = 0;
+void MapView::fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
+                   std::size_t max_points) {
+  std::size_t total = 0;
   for (const MapViewBlock* b : blocks) {
-    n += static_cast<vtkIdType>(b->points.size());
+    total += b->points.size();
   }
+  layer.stride = total <= max_points ? 1 : (total + max_points - 1) / max_points;
+  const auto n = static_cast<vtkIdType>((total + layer.stride - 1) / layer.stride);
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToFloat();
   points->SetNumberOfPoints(n);
   auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
+  std::size_t k = 0;
   for (const MapViewBlock* b : blocks) {
     for (const Eigen::Vector3f& p : b->points) {
-      xyz[0] = p.x();
-      xyz[1] = p.y();
-      xyz[2] = p.z();
-      xyz += 3;
+      if (k++ % layer.stride == 0) {
+        xyz[0] = p.x();
+        xyz[1] = p.y();
+        xyz[2] = p.z();
+        xyz += 3;
+      }
     }
   }
   layer.poly->SetPoints(points);
   layer.poly->SetVerts(pointCells(n, false));
-  colour(layer, blocks);
+  colour(layer, blocks, layer.stride);
 }
 
 void MapView::recolour() {
-  colour(map_layer_, mapBlocks());
-  colour(surface_layer_, {&surface_});
+  colour(map_layer_, mapBlocks(), map_layer_.stride);
+  colour(surface_layer_, {&surface_}, surface_layer_.stride);
 }
 
-void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks) {
+void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
+                     std::size_t stride) {
   auto scalars = vtkSmartPointer<vtkFloatArray>::New();
   scalars->SetNumberOfValues(layer.poly->GetNumberOfPoints());
   const ColourBy by =
       colour_by_ == ColourBy::Error && !has_errors_ ? ColourBy::Intensity : colour_by_;
   vtkIdType i = 0;
+  std::size_t seen = 0;
   std::vector<float> intensities;
   for (const MapViewBlock* b : blocks) {
-    for (std::size_t k = 0; k < b->points.size(); ++k, ++i) {
+    for (std::size_t k = 0; k < b->points.size(); ++k) {
+      if (seen++ % stride != 0) {
+        continue;
+      }
       float v = b->values[k];
       if (by == ColourBy::Depth) {
         v = b->points[k].z();
@@ -239,7 +251,7 @@ void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& 
       } else {
         intensities.push_back(v);
       }
-      scalars->SetValue(i, v);
+      scalars->SetValue(i++, v);
     }
   }
   double range[2] = {0.0, 1.0};
