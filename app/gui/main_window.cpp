@@ -309,7 +309,7 @@ void MainWindow::wireRunner() {
             }
             surface.errors_m = surface_errors_m;
             map_view_->setSurface(std::move(surface));
-            if (layer_->currentIndex() == 0) {
+            if (layer_->currentIndex() == 0 && !result->surface.empty()) {
               layer_->setCurrentIndex(1);  // the run's product: its surface
               map_view_->fitCamera();
             }
