@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string_view>
@@ -17,14 +18,18 @@
 namespace sonarcarve::fuzz {
 namespace {
 
-// A scratch folder for this process (in memory where /dev/shm exists), kept between inputs
-// and removed at exit.
+// A scratch folder for this process, kept between inputs: $SONARCARVE_FUZZ_SCRATCH (set by
+// run.sh, which removes it: libFuzzer ends without running destructors), else one in memory
+// (/dev/shm) removed at a normal exit.
 struct ScratchFolder {
   ScratchFolder() {
+    const char* given = std::getenv("SONARCARVE_FUZZ_SCRATCH");
     const std::filesystem::path shm = "/dev/shm";
     const auto base =
         std::filesystem::is_directory(shm) ? shm : std::filesystem::temp_directory_path();
-    path = base / ("sonarcarve-fuzz-" + std::to_string(::getpid()));
+    path = given != nullptr && *given != '\0'
+               ? std::filesystem::path(given)
+               : base / ("sonarcarve-fuzz-" + std::to_string(::getpid()));
     std::filesystem::create_directories(path);
   }
   ~ScratchFolder() {

@@ -19,8 +19,9 @@ for t in "${targets[@]}"; do
   [ -x "$exe" ] || { echo "missing $exe: cmake --preset fuzz && cmake --build --preset fuzz" >&2; exit 2; }
   mkdir -p "build/fuzz/corpus/$t" "build/fuzz/artifacts/$t"
   log="build/fuzz/artifacts/$t/fuzz.log"
+  scratch="build/fuzz/scratch/$t-$$"
   echo "== $t: $seconds s"
-  if "$exe" "build/fuzz/corpus/$t" "tests/fuzz/corpus/$t" -max_total_time="$seconds" \
+  if SONARCARVE_FUZZ_SCRATCH="$scratch" "$exe" "build/fuzz/corpus/$t" "tests/fuzz/corpus/$t" -max_total_time="$seconds" \
       -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
       -artifact_prefix="build/fuzz/artifacts/$t/" >"$log" 2>&1; then
     grep -E "^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)|^Done" "$log" || true
@@ -28,5 +29,6 @@ for t in "${targets[@]}"; do
     status=1
     grep -E "ERROR|SUMMARY|Test unit written" "$log" || true
   fi
+  rm -rf "$scratch"
 done
 exit $status
