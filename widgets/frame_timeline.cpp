@@ -26,7 +26,10 @@ FrameTimeline::FrameTimeline(QWidget* parent) : QWidget(parent) {
   slider_ = new QSlider(Qt::Horizontal, this);
   layout->addWidget(slider_, 1);
   label_ = new QLabel(this);
-  label_->setMinimumWidth(170);
+  // A fixed size: otherwise each new text re-lays out the whole window while a run plays.
+  label_->setFixedSize(
+      label_->fontMetrics().horizontalAdvance("frame 000000 / 000000   t = 000000.00 s"),
+      label_->sizeHint().height());
   layout->addWidget(label_);
 
   connect(back_, &QToolButton::clicked, this, &FrameTimeline::stepBack);

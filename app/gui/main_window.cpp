@@ -81,9 +81,12 @@ MainWindow::MainWindow(QWidget* parent)
   setCentralWidget(centre);
 
   progress_bar_ = new QProgressBar;
-  progress_bar_->setMaximumWidth(260);
+  progress_bar_->setFixedWidth(260);  // its text changes at every report: no re-layout
   progress_bar_->setTextVisible(true);
   progress_label_ = new QLabel(tr("Open a mission (File > Open, or drop its folder here)"));
+  // A label of fixed size: Qt re-lays out the whole window each time another label's text
+  // changes (60 ms and more with software OpenGL while carving).
+  progress_label_->setFixedSize(760, progress_label_->sizeHint().height());
   statusBar()->addWidget(progress_label_, 1);
   statusBar()->addPermanentWidget(progress_bar_);
 

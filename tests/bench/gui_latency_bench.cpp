@@ -1,7 +1,8 @@
 // Event-loop latency of the workbench while it carves: the GUI thread must never block for
 // more than 50 ms. A 5 ms timer runs on the GUI thread from the start of the run to its end;
 // every gap between two ticks beyond the 5 ms is time the event loop could not answer.
-//   sonarcarve_gui_latency_bench MISSION [--noise-model N.yaml] [--json]
+//   sonarcarve_gui_latency_bench MISSION [--noise-model N.yaml] [--json] [--trace]
+// --trace names every event that took 20 ms or more (nested events are listed too).
 // Run it under Xvfb (xvfb-run -a -s '-screen 0 1280x800x24'); it prints the worst gap, the
 // 99th percentile and the run's duration. It asserts nothing: figures go to docs/benchmarks.md.
 #include <QApplication>
@@ -15,9 +16,38 @@
 #include "params_panel.h"
 #include "vtk_gl_widget.h"
 
+namespace {
+
+// Times every event the GUI thread handles, to name what blocks it (with --trace).
+class TimedApplication : public QApplication {
+ public:
+  using QApplication::QApplication;
+  bool trace = false;
+  bool notify(QObject* receiver, QEvent* event) override {
+    if (!trace) {
+      return QApplication::notify(receiver, event);
+    }
+    // Named before the event: a DeferredDelete event deletes its receiver.
+    const int type = event->type();
+    const QByteArray name = QByteArray(receiver->metaObject()->className()) + " " +
+                            receiver->objectName().toLocal8Bit();
+    QElapsedTimer t;
+    t.start();
+    const bool result = QApplication::notify(receiver, event);
+    const qint64 ms = t.elapsed();
+    if (ms >= 20) {
+      std::fprintf(stderr, "slow event: %lld ms, type %d, %s\n", static_cast<long long>(ms), type,
+                   name.constData());
+    }
+    return result;
+  }
+};
+
+}  // namespace
+
 int main(int argc, char** argv) {
   sonarcarve::widgets::VtkGlWidget::setDefaultSurfaceFormat();
-  QApplication app(argc, argv);
+  TimedApplication app(argc, argv);
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s MISSION [--noise-model FILE] [--json]\n", argv[0]);
     return 2;
@@ -28,6 +58,8 @@ int main(int argc, char** argv) {
     const QString arg = argv[i];
     if (arg == "--json") {
       json = true;
+    } else if (arg == "--trace") {
+      app.trace = true;
     } else if (arg == "--noise-model" && i + 1 < argc) {
       noise_model = argv[++i];
     }
