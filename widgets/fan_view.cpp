@@ -66,6 +66,7 @@ void FanView::resizeEvent(QResizeEvent*) {
 
 void FanView::layoutFan() {
   lookup_.clear();
+  grid_ = QImage();
   if (!sonar_) {
     return;
   }
@@ -171,10 +172,18 @@ void FanView::drawGrid(QPainter& painter) const {
 void FanView::paintEvent(QPaintEvent*) {
   QPainter painter(this);
   painter.drawImage(0, 0, fan_);
-  painter.setRenderHint(QPainter::Antialiasing);
-  if (sonar_) {
-    drawGrid(painter);
+  // The grid is drawn once per size and sonar, not at every frame of a run.
+  if (sonar_ && grid_.size() != size()) {
+    grid_ = QImage(size(), QImage::Format_ARGB32_Premultiplied);
+    grid_.fill(Qt::transparent);
+    QPainter grid_painter(&grid_);
+    grid_painter.setRenderHint(QPainter::Antialiasing);
+    drawGrid(grid_painter);
   }
+  if (sonar_) {
+    painter.drawImage(0, 0, grid_);
+  }
+  painter.setRenderHint(QPainter::Antialiasing);
   painter.setPen(QColor(230, 230, 230));
   painter.setFont(QFont(painter.font().family(), 9, QFont::Bold));
   painter.drawText(rect().adjusted(6, 4, -6, -4), Qt::AlignTop | Qt::AlignRight, title_);

@@ -67,6 +67,7 @@ class FanView : public QWidget {
   double px_per_m_ = 1.0;
   std::vector<int> lookup_;
   QImage fan_;
+  QImage grid_;  ///< rings, bearing lines and labels, transparent elsewhere
   QString readout_;
 };
 

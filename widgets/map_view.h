@@ -47,7 +47,7 @@ class MapView : public QWidget {
  public:
   enum class ColourBy { Intensity, Depth, Error };
   enum class Layer { Map, Surface, Mesh };
-  static constexpr int kRedrawInterval_ms = 100;
+  static constexpr int kRedrawInterval_ms = 200;
   /// The carved map is drawn with at most this many points (every n-th voxel): software
   /// OpenGL on 2 cores took 30 to 90 ms for 90,000 points while carving, and the GUI thread
   /// must not block for more than 50 ms. The whole map is kept and exported.

@@ -47,7 +47,7 @@ namespace sonarcarve::gui {
 namespace {
 
 constexpr int kMaxRecent = 8;
-constexpr int kFollowInterval_ms = 250;
+constexpr int kFollowInterval_ms = 400;
 
 QString describe(const std::exception& e) {
   return QString::fromStdString(e.what());
@@ -81,7 +81,8 @@ MainWindow::MainWindow(QWidget* parent)
   setCentralWidget(centre);
 
   progress_bar_ = new QProgressBar;
-  progress_bar_->setFixedWidth(260);  // its text changes at every report: no re-layout
+  // Its text changes at every report: a fixed size keeps Qt from re-laying out the window.
+  progress_bar_->setFixedSize(260, progress_bar_->sizeHint().height());
   progress_bar_->setTextVisible(true);
   progress_label_ = new QLabel(tr("Open a mission (File > Open, or drop its folder here)"));
   // A label of fixed size: Qt re-lays out the whole window each time another label's text
