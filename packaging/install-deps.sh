@@ -15,6 +15,8 @@ packages=(
   qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools assimp-utils
+  # the Debian package (packaging/README.md): CPack's DEB generator, man pages, the package test
+  dpkg-dev help2man lintian desktop-file-utils appstream man-db
 )
 # Fuzzing (the fuzz preset, docs/fuzzing.md) also needs clang-14 and libclang-rt-14-dev; it is
 # not part of the test suite, so they are not installed here.

@@ -9,6 +9,7 @@
 #include <QTimer>
 #include <iostream>
 
+#include "desktop_integration.h"
 #include "frame_timeline.h"
 #include "main_window.h"
 #include "map_view.h"
@@ -21,7 +22,7 @@ int main(int argc, char** argv) {
   QApplication::setApplicationName("SonarCarve");
   QApplication::setOrganizationName("SonarCarve");
   QApplication::setApplicationVersion(SONARCARVE_VERSION);
-  QApplication::setWindowIcon(QIcon::fromTheme("sonarcarve"));
+  sonarcarve::gui::setUpDesktopIntegration();
 
   QCommandLineParser parser;
   parser.setApplicationDescription(
