@@ -32,9 +32,11 @@ done
 work=$(mktemp -d /tmp/sonarcarve-package-test.XXXXXX)
 moved="$build.moved-by-package-test.$$"
 installed=0
+watchdog=
 cleanup() {
   local status=$?
   cd /
+  [ -z "$watchdog" ] || kill "$watchdog" 2>/dev/null || true
   if [ -d "$moved" ] && [ ! -e "$build" ]; then
     mv "$moved" "$build" && echo "build tree put back: $build"
   fi
@@ -148,9 +150,20 @@ echo "both programs load $core and find every library"
 step "Build tree moved out of the way: $build -> $moved"
 cd "$work"
 mv "$build" "$moved"
+# The build tree must come back even if something hangs: each program gets 100 s, and a
+# watchdog ends the test (the EXIT trap puts the tree back) 760 s after it started, before
+# CTest's time-out (900 s) would kill it without running the trap.
+main=$$
+(
+  trap 'kill $sleeper 2>/dev/null; exit 0' TERM
+  sleep $((SECONDS < 750 ? 760 - SECONDS : 10)) &
+  sleeper=$!
+  wait $sleeper && kill -TERM $main
+) >/dev/null 2>&1 &
+watchdog=$!
 # The installed programs run with a clean environment, from an empty folder.
 run() {
-  timeout 300 env -i HOME="$work" PATH=/usr/bin:/bin LANG=C.UTF-8 "$@"
+  timeout 100 env -i HOME="$work" PATH=/usr/bin:/bin LANG=C.UTF-8 "$@"
 }
 out=$(run sonarcarve-cli --version)
 echo "$out"
