@@ -1,24 +1,10 @@
 #include "frame_image.h"
 
 #include <algorithm>
-#include <vector>
 
 namespace sonarcarve::widgets {
-DisplayRange displayRange(const cv::Mat& image) {
-  if (image.empty()) {
-    return {};
-  }
-  std::vector<float> values(image.begin<float>(), image.end<float>());
-  const auto at = [&](double q) {
-    const auto it =
-        values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
-    std::nth_element(values.begin(), it, values.end());
-    return *it;
-  };
-  DisplayRange range;
-  range.low = at(0.01);
-  range.high = std::max(at(0.998), range.low + 1.0f);
-  return range;
+DisplayWindow displayRange(const cv::Mat& image) {
+  return DisplayWindow::fromQuantiles(image, 0.01, 0.998);
 }
 
 QImage polarImageToQImage(const cv::Mat& image, float low, float high, ColourMap map) {

@@ -8,16 +8,13 @@
 #include <opencv2/core.hpp>
 
 #include "colour_maps.h"
+#include "sonar/fan_image.h"
 
 namespace sonarcarve::widgets {
 
 /// Intensities to show from black to full colour: from the 1st to the 99.8th percentile, so
 /// that a few saturated specular returns do not darken the whole frame.
-struct DisplayRange {
-  float low = 0.0f;
-  float high = 1.0f;
-};
-DisplayRange displayRange(const cv::Mat& image);
+DisplayWindow displayRange(const cv::Mat& image);
 
 /// `image`: CV_32F polar image. Values <= low map to the first colour, >= high to the last.
 QImage polarImageToQImage(const cv::Mat& image, float low, float high,

@@ -273,6 +273,27 @@ void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& 
   mapper->ScalarVisibilityOn();
 }
 
+const char* MapView::nameOf(ColourBy by) {
+  switch (by) {
+    case ColourBy::Depth:
+      return "depth";
+    case ColourBy::Error:
+      return "error";
+    case ColourBy::Intensity:
+      break;
+  }
+  return "intensity";
+}
+
+MapView::ColourBy MapView::colourByNamed(std::string_view name) {
+  for (ColourBy by : {ColourBy::Depth, ColourBy::Error}) {
+    if (name == nameOf(by)) {
+      return by;
+    }
+  }
+  return ColourBy::Intensity;
+}
+
 void MapView::setColourBy(ColourBy by) {
   colour_by_ = by;
   recolour();

@@ -12,6 +12,7 @@
 #include <QWidget>
 #include <map>
 #include <opencv2/core.hpp>
+#include <string_view>
 #include <vector>
 
 #include "mesh/surface_mesher.h"
@@ -47,6 +48,10 @@ class MapView : public QWidget {
  public:
   enum class ColourBy { Intensity, Depth, Error };
   enum class Layer { Map, Surface, Mesh };
+  /// "intensity", "depth", "error": the names sessions and the command line use.
+  static const char* nameOf(ColourBy by);
+  /// The colouring of a name; Intensity for an unknown one.
+  static ColourBy colourByNamed(std::string_view name);
   static constexpr int kRedrawInterval_ms = 200;
   /// The carved map is drawn with at most this many points (every n-th voxel): software
   /// OpenGL on 2 cores took 30 to 90 ms for 90,000 points while carving, and the GUI thread

@@ -25,10 +25,8 @@ void addEvaluateCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--errors", o->errors, "Write the points with their error (PLY, 'error_m')");
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->callback([o, &exit_code] {
-    std::vector<Eigen::Vector3f> points;
-    for (const auto& p : readSurfacePointsPly(o->reconstruction)) {
-      points.push_back(p.position_m);
-    }
+    const std::vector<Eigen::Vector3f> points =
+        positionsOf(readSurfacePointsPly(o->reconstruction));
     const EvaluationResult r = evaluate(
         points, loadSceneMesh(o->reference),
         o->visible.empty() ? std::vector<Eigen::Vector3f>{} : readPointsPly(o->visible), o->tau);

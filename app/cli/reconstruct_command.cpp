@@ -128,10 +128,7 @@ int runReconstruct(const ReconstructOptions& o) {
                            {"total_s", result.total_s}};
   const auto truth = mission.folder / "ground_truth.ply";
   if (std::filesystem::exists(truth) && !result.surface.empty()) {
-    std::vector<Eigen::Vector3f> points;
-    for (const auto& p : result.surface) {
-      points.push_back(p.position_m);
-    }
+    const std::vector<Eigen::Vector3f> points = positionsOf(result.surface);
     // Ground truth read once, for the points and for the mesh.
     const Scene truth_mesh = loadSceneMesh(truth);
     const auto visible_file = mission.folder / "visible_points.ply";

@@ -55,10 +55,8 @@ int main(int argc, char** argv) {
   const bool quit_when_done = parser.isSet(quit);
   const QString shot = parser.value(screenshot);
   if (parser.isSet(colour)) {
-    const QString mode = parser.value(colour);
-    window.setColourBy(mode == "error"   ? sonarcarve::widgets::MapView::ColourBy::Error
-                       : mode == "depth" ? sonarcarve::widgets::MapView::ColourBy::Depth
-                                         : sonarcarve::widgets::MapView::ColourBy::Intensity);
+    window.setColourBy(
+        sonarcarve::widgets::MapView::colourByNamed(parser.value(colour).toStdString()));
   }
   const auto done = [&](bool ok) {
     status = ok ? 0 : 1;

@@ -307,8 +307,8 @@ void MainWindow::wireRunner() {
             map_view_->flush();
             map_view_->setMesh(result->mesh);
             widgets::MapViewBlock surface;
+            surface.points = positionsOf(result->surface);
             for (const SurfacePoint& p : result->surface) {
-              surface.points.push_back(p.position_m);
               surface.values.push_back(p.intensity);
             }
             surface.errors_m = surface_errors_m;
@@ -649,8 +649,8 @@ Session MainWindow::currentSession() const {
   s.params = params_panel_->params();
   s.camera = map_view_->cameraState();
   s.frame = timeline_->currentFrame();
-  static const char* names[] = {"intensity", "depth", "error"};
-  s.colour_by = names[std::clamp(colour_by_->currentIndex(), 0, 2)];
+  s.colour_by =
+      widgets::MapView::nameOf(static_cast<widgets::MapView::ColourBy>(colour_by_->currentIndex()));
   return s;
 }
 
@@ -678,7 +678,7 @@ bool MainWindow::openSession(const QString& file) {
     return false;
   }
   map_view_->setCameraState(s.camera);
-  colour_by_->setCurrentIndex(s.colour_by == "depth" ? 1 : s.colour_by == "error" ? 2 : 0);
+  setColourBy(widgets::MapView::colourByNamed(s.colour_by));
   timeline_->setCurrentFrame(s.frame);
   follow_action_->setChecked(false);  // keep the saved frame in view
   addRecent(file);
@@ -724,13 +724,7 @@ void MainWindow::fillRecentMenu() {
   recent_menu_->clear();
   const QStringList recent = QSettings().value("recent").toStringList();
   for (const QString& path : recent) {
-    recent_menu_->addAction(path, this, [this, path] {
-      if (path.endsWith(".sonarcarve")) {
-        openSession(path);
-      } else {
-        openMission(path);
-      }
-    });
+    recent_menu_->addAction(path, this, [this, path] { openPath(path); });
   }
   recent_menu_->setEnabled(!recent.isEmpty());
 }
@@ -836,6 +830,16 @@ void MainWindow::importLog(const ImportRequest& request) {
   });
 }
 
+void MainWindow::openPath(const QString& path) {
+  if (path.endsWith(".sonarcarve")) {
+    openSession(path);
+  } else if (QFileInfo(path).isFile() && looksLikeOculusLog(path.toStdString())) {
+    importWithDialog(path);
+  } else {
+    openMission(path);
+  }
+}
+
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
   if (event->mimeData()->hasUrls()) {
     event->acceptProposedAction();
@@ -847,14 +851,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
   if (urls.isEmpty()) {
     return;
   }
-  const QString path = urls.front().toLocalFile();
-  if (path.endsWith(".sonarcarve")) {
-    openSession(path);
-  } else if (QFileInfo(path).isFile() && looksLikeOculusLog(path.toStdString())) {
-    importWithDialog(path);
-  } else {
-    openMission(path);
-  }
+  openPath(urls.front().toLocalFile());
   event->acceptProposedAction();
 }
 

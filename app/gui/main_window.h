@@ -103,7 +103,7 @@ class MainWindow : public QMainWindow {
     int index = 0;
     cv::Mat raw;
     cv::Mat denoised;
-    widgets::DisplayRange range;
+    DisplayWindow range;
     bool probability = false;
     QString error;
   };
@@ -111,6 +111,8 @@ class MainWindow : public QMainWindow {
   void drawFrame(const ShownFrame& shown);
   void paramsEdited();
   void updateDetector();
+  /// A session, a vendor log (through the import dialog) or a mission, by what `path` is.
+  void openPath(const QString& path);
   void addRecent(const QString& path);
   void fillRecentMenu();
   void updateRunActions();

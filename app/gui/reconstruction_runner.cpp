@@ -202,12 +202,7 @@ int ReconstructionRunner::start(RunRequest request) {
           reconstruct(*request.mission, request.params, progress, &observer, kMapUpdateFrames));
       std::vector<float> errors;
       if (request.truth && !result->cancelled) {
-        std::vector<Eigen::Vector3f> points;
-        points.reserve(result->surface.size());
-        for (const SurfacePoint& p : result->surface) {
-          points.push_back(p.position_m);
-        }
-        errors = request.truth->distances(points);
+        errors = request.truth->distances(positionsOf(result->surface));
       }
       post(id, [this, id, result, errors = std::move(errors)] {
         running_job_ = 0;

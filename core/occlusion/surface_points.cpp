@@ -4,6 +4,15 @@
 
 namespace sonarcarve {
 
+std::vector<Eigen::Vector3f> positionsOf(const SurfacePoints& points) {
+  std::vector<Eigen::Vector3f> positions;
+  positions.reserve(points.size());
+  for (const SurfacePoint& p : points) {
+    positions.push_back(p.position_m);
+  }
+  return positions;
+}
+
 void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path) {
   PointCloud cloud;
   std::vector<float>& intensity = cloud.properties["intensity"];

@@ -18,6 +18,9 @@ struct SurfacePoint {
 
 using SurfacePoints = std::vector<SurfacePoint>;
 
+/// The points' positions alone (for evaluation and distance colouring).
+std::vector<Eigen::Vector3f> positionsOf(const SurfacePoints& points);
+
 /// Binary PLY with vertex properties x, y, z (float), intensity (float), views (uint).
 /// Atomic: a failure keeps the previous file.
 void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path);

@@ -17,6 +17,14 @@ cv::Mat toColour(const cv::Mat& polar, DisplayWindow w) {
   return colour;
 }
 
+// The q-quantile of `values` (reorders them).
+float quantile(std::vector<float>& values, double q) {
+  auto it =
+      values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), it, values.end());
+  return *it;
+}
+
 }  // namespace
 
 DisplayWindow DisplayWindow::fromPercentiles(const cv::Mat& image) {
@@ -24,20 +32,24 @@ DisplayWindow DisplayWindow::fromPercentiles(const cv::Mat& image) {
   if (values.empty()) {
     return {};
   }
-  const auto at = [&](double q) {
-    auto it =
-        values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
-    std::nth_element(values.begin(), it, values.end());
-    return *it;
-  };
   // Sparse returns (a clean simulated frame) sit above the 99.5th percentile: keep the
   // brightest quarter of the range visible as well.
   const float brightest = *std::max_element(values.begin(), values.end());
-  DisplayWindow w{at(0.01), std::max(at(0.995), 0.25f * brightest)};
+  DisplayWindow w{quantile(values, 0.01), 0.0f};
+  w.high = std::max(quantile(values, 0.995), 0.25f * brightest);
   if (w.high <= w.low) {
     w.high = w.low + 1.0f;
   }
   return w;
+}
+
+DisplayWindow DisplayWindow::fromQuantiles(const cv::Mat& image, double low_q, double high_q) {
+  std::vector<float> values(image.begin<float>(), image.end<float>());
+  if (values.empty()) {
+    return {};
+  }
+  const float low = quantile(values, low_q);
+  return {low, std::max(quantile(values, high_q), low + 1.0f)};
 }
 
 cv::Mat polarPicture(const cv::Mat& polar, DisplayWindow window) {

@@ -14,6 +14,9 @@ struct DisplayWindow {
   float high = 255.0f;
   /// From the 1st percentile to the larger of the 99.5th percentile and a quarter of the max.
   static DisplayWindow fromPercentiles(const cv::Mat& image);
+  /// From the `low_q` to the `high_q` quantile (for live views: a few saturated specular
+  /// returns must not darken a whole frame); at least one count wide.
+  static DisplayWindow fromQuantiles(const cv::Mat& image, double low_q, double high_q);
 };
 
 /// Polar image as BGR, nearest range at the bottom, one pixel per bin and beam.
