@@ -163,13 +163,9 @@ int benchCarve(const BenchOptions& o) {
     observed += static_cast<double>(stats.voxels_observed) / static_cast<double>(frames);
     progress.report("bench carve", i + 1, frames);
   }
-  std::vector<Eigen::Vector3i> occupied;
-  std::vector<float> values;
-  map.forEachOccupiedOnShell([&](const Eigen::Vector3i& v, float value) {
-    occupied.push_back(v);
-    values.push_back(value);
-  });
-  OcclusionResolver resolver(occupied, values, sonar, params);
+  const VoxelValues shell = collectVoxels(
+      [&](const Carver::VoxelVisitor& visit) { map.forEachOccupiedOnShell(visit); });
+  OcclusionResolver resolver(shell.voxels, shell.values, sonar, params);
   const double occlusion_total = timeMs([&] {
     ThreadPool::shared().parallelFor(frames, 1, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i)

@@ -3,6 +3,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.h"
+#include "cli/source_flags.h"
 #include "common/error.h"
 #include "denoise/detector.h"
 #include "io/atomic_file.h"
@@ -32,7 +33,10 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
     float low = -1.0f, high = -1.0f;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("mission", o->mission, "Mission folder")->required();
+  cmd->add_option("mission", o->mission, "Mission folder, or a recording read in place")
+      ->required();
+  auto source = std::make_shared<SourceFlags>();
+  addSourceFlags(*cmd, *source);
   cmd->add_option("--index", o->index, "Frame index (0-based)")->capture_default_str();
   cmd->add_option("--polar", o->polar, "Write the polar image here (PNG)");
   cmd->add_option("--fan", o->fan, "Write the fan in true geometry here (PNG)");
@@ -44,8 +48,8 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--low", o->low, "Intensity shown black (default: 1st percentile)");
   cmd->add_option("--high", o->high, "Intensity shown white (default: 99.5th percentile)");
-  cmd->callback([o, &exit_code] {
-    const Mission mission = readMission(o->mission);
+  cmd->callback([o, source, &exit_code] {
+    const Mission mission = openMission(o->mission, openOptionsFrom(*source));
     if (o->index >= mission.frames.size()) {
       throw Error(o->mission, "frame " + std::to_string(o->index),
                   "no such frame: the mission has " + std::to_string(mission.frames.size()));

@@ -7,8 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/source_flags.h"
 #include "common/angles.h"
 #include "io/import.h"
+#include "io/frame_source.h"
 #include "io/mission.h"
 #include "io/mission_summary.h"
 #include "io/oculus_log.h"
@@ -135,29 +137,35 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
       "info", "Summarise a mission or a vendor log: frames, sonar, navigation, errors");
   auto path = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
-  auto aperture = std::make_shared<double>(0.0);
+  auto source = std::make_shared<SourceFlags>();
   cmd->add_option("mission", *path,
                   "Mission folder or its mission.yaml, or a vendor log (Oculus messages or "
                   ".oculus recording)")
       ->required();
   cmd->add_flag("--json", *json, "Print the summary as JSON for scripts");
-  cmd->add_option("--aperture-deg", *aperture,
-                  "Vendor logs: vertical aperture, as for import (default: from the frequency)");
-  cmd->callback([path, json, aperture, &exit_code] {
-    if (looksLikeOculusLog(*path)) {
-      infoOnLog(*path, *json, *aperture);
+  addSourceFlags(*cmd, *source);
+  cmd->callback([path, json, source, &exit_code] {
+    const OpenOptions options = openOptionsFrom(*source);
+    if (looksLikeOculusLog(*path) && options.nav_csv.empty()) {
+      infoOnLog(*path, *json, source->aperture_deg);
       exit_code = 0;
       return;
     }
-    const Mission mission = readMission(*path);
+    const Mission mission = openMission(*path, options);
     const MissionSummary summary = summarize(mission, true);
     if (*json) {
       nlohmann::json j = summaryJson(mission.sonar, summary);
       j["folder"] = mission.folder.string();
+      j["source"] = mission.source->kind();
+      j["warnings"] = mission.warnings;
       std::cout << j.dump(2) << "\n";
     } else {
-      std::printf("Mission      %s (%s)\n", summary.name.c_str(), mission.folder.string().c_str());
+      std::printf("Mission      %s (%s, %s)\n", summary.name.c_str(), mission.folder.string().c_str(),
+                  mission.source->kind().c_str());
       printText(mission.sonar, summary);
+      for (const std::string& warning : mission.warnings) {
+        std::printf("Note         %s\n", warning.c_str());
+      }
     }
     exit_code = 0;
   });

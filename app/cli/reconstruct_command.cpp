@@ -1,23 +1,23 @@
-// `sonarcarve-cli reconstruct MISSION --out DIR`: carve, resolve occlusions, export.
+// `sonarcarve-cli reconstruct MISSION|RECORDING --out DIR`: carve, resolve occlusions, export.
 // Writes DIR/surface_points.ply, DIR/mesh.ply and DIR/mesh.stl (world NED, metres), DIR/map.bt
 // (fast engine), DIR/params.yaml (what was used) and DIR/report.json; a simulated mission's
 // ground truth, when present, is evaluated too.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "carve/occupancy_export.h"
 #include "cli/commands.h"
+#include "cli/source_flags.h"
 #include "cli/terminal_progress.h"
 #include "common/angles.h"
 #include "common/error.h"
-#include "eval/evaluator.h"
 #include "io/atomic_file.h"
+#include "io/frame_source.h"
 #include "io/mission.h"
 #include "mesh/mesh_export.h"
 #include "pipeline/reconstruction.h"
-#include "sim/scene_io.h"
+#include "pipeline/report.h"
 
 namespace sonarcarve::cli {
 namespace {
@@ -38,6 +38,7 @@ struct ReconstructOptions {
   double cfar_pfa = -1.0;
   int smoothing = -1;
   std::vector<double> region;
+  SourceFlags source;
 };
 
 ReconstructionParams paramsFrom(const ReconstructOptions& o) {
@@ -86,13 +87,17 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
 }
 
 int runReconstruct(const ReconstructOptions& o) {
-  const Mission mission = readMission(o.mission);
+  const Mission mission = openMission(o.mission, openOptionsFrom(o.source));
+  for (const std::string& warning : mission.warnings) {
+    std::cerr << "warning: " << warning << "\n";
+  }
   const ReconstructionParams params = paramsFrom(o);
   const std::filesystem::path out(o.out);
   std::filesystem::create_directories(out);
 
   TerminalProgress progress;
-  const ReconstructionResult result = reconstruct(mission, params, progress);
+  const ReconstructionResult result =
+      Pipeline(mission, params, ThreadPool::shared()).run(progress);
   progress.finish();
   for (const FrameProblem& p : result.skipped) {
     std::cerr << "skipped: " << p.message << "\n";
@@ -109,41 +114,9 @@ int runReconstruct(const ReconstructOptions& o) {
     exportMesh(result.mesh, out / "mesh.stl", stl);
   }
   writeFileAtomically(out / "params.yaml", params.toYaml());
-
-  nlohmann::json report = {{"mission", mission.folder.string()},
-                           {"engine", params.engine},
-                           {"detector", params.detector.resolved(!params.noise_model.empty()).mode},
-                           {"smoothing", params.detector.smoothing},
-                           {"z", params.detector.z},
-                           {"frames_used", result.frames_used},
-                           {"frames_skipped", result.skipped.size()},
-                           {"cancelled", result.cancelled},
-                           {"occupied_voxels", result.occupied_voxels},
-                           {"surface_points", result.surface.size()},
-                           {"mesh_vertices", result.mesh.vertices.size()},
-                           {"mesh_triangles", result.mesh.triangles.size()},
-                           {"map_megabytes", static_cast<double>(result.map_bytes) / 1e6},
-                           {"carve_ms_per_frame_median", result.carve_ms_median},
-                           {"occlusion_ms_per_frame", result.occlusion_ms_per_frame},
-                           {"total_s", result.total_s}};
-  const auto truth = mission.folder / "ground_truth.ply";
-  if (std::filesystem::exists(truth) && !result.surface.empty()) {
-    const std::vector<Eigen::Vector3f> points = positionsOf(result.surface);
-    // Ground truth read once, for the points and for the mesh.
-    const Scene truth_mesh = loadSceneMesh(truth);
-    const auto visible_file = mission.folder / "visible_points.ply";
-    const std::vector<Eigen::Vector3f> visible = std::filesystem::exists(visible_file)
-                                                     ? readPointsPly(visible_file)
-                                                     : std::vector<Eigen::Vector3f>{};
-    report["evaluation"] = nlohmann::json::parse(evaluate(points, truth_mesh, visible).toJson());
-    if (!result.mesh.vertices.empty()) {
-      // Mesh accuracy: distance from the mesh vertices to the ground truth.
-      report["mesh_evaluation"] =
-          nlohmann::json::parse(evaluate(result.mesh.vertices, truth_mesh, visible).toJson());
-    }
-  }
-  writeFileAtomically(out / "report.json", report.dump(2) + "\n");
-  std::cout << report.dump(2) << "\n";
+  const std::string report = reconstructionReport(mission, params, result);
+  writeFileAtomically(out / "report.json", report);
+  std::cout << report;
   return result.cancelled ? 130 : 0;
 }
 
@@ -152,7 +125,9 @@ int runReconstruct(const ReconstructOptions& o) {
 void addReconstructCommand(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("reconstruct", "Carve a 3D map from a mission and export it");
   auto o = std::make_shared<ReconstructOptions>();
-  cmd->add_option("mission", o->mission, "Mission folder")->required();
+  cmd->add_option("mission", o->mission,
+                  "Mission folder, or a recording read in place (an Oculus log: give --nav)")
+      ->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
   cmd->add_option("--params", o->params_file,
                   "Parameters YAML (as saved by the GUI or params.yaml)");
@@ -173,6 +148,7 @@ void addReconstructCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--min-views", o->min_views,
                   "Keep surface voxels that are the first return in at least this many views");
   cmd->add_option("--region", o->region, "Region of interest: N0 E0 D0 N1 E1 D1 (m)")->expected(6);
+  addSourceFlags(*cmd, o->source);
   cmd->callback([o, &exit_code] { exit_code = runReconstruct(*o); });
 }
 

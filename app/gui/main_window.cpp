@@ -34,6 +34,7 @@
 #include "frame_timeline.h"
 #include "import_dialog.h"
 #include "io/atomic_file.h"
+#include "io/frame_source.h"
 #include "io/oculus_log.h"
 #include "map_view.h"
 #include "mesh/mesh_export.h"
@@ -358,10 +359,35 @@ void MainWindow::showError(const QString& title, const QString& message) {
   box->open();
 }
 
+namespace {
+
+// A recording without its own navigation (a vendor log) is placed with the navigation CSV
+// beside it: LOG_STEM.nav.csv, LOG_STEM.csv or nav.csv in its folder, the first that exists.
+OpenOptions optionsBeside(const std::filesystem::path& recording) {
+  OpenOptions options;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(recording, ec)) {
+    return options;
+  }
+  const std::filesystem::path folder = recording.parent_path();
+  const std::string stem = recording.stem().string();
+  for (const std::filesystem::path& nav :
+       {folder / (stem + ".nav.csv"), folder / (stem + ".csv"), folder / "nav.csv"}) {
+    if (std::filesystem::is_regular_file(nav, ec)) {
+      options.nav_csv = nav;
+      break;
+    }
+  }
+  return options;
+}
+
+}  // namespace
+
 bool MainWindow::openMission(const QString& path) {
   std::shared_ptr<const Mission> mission;
   try {
-    mission = std::make_shared<const Mission>(readMission(path.toStdString()));
+    mission = std::make_shared<const Mission>(
+        sonarcarve::openMission(path.toStdString(), optionsBeside(path.toStdString())));
     if (mission->frames.empty()) {
       throw Error(path.toStdString(), "", "the mission has no frames");
     }
@@ -381,6 +407,9 @@ bool MainWindow::openMission(const QString& path) {
     } catch (const std::exception& e) {
       log(tr("ground truth not used: %1").arg(describe(e)));
     }
+  }
+  for (const std::string& warning : mission_->warnings) {
+    log(tr("note: %1").arg(QString::fromStdString(warning)));
   }
   setWindowTitle(tr("SonarCarve — %1").arg(QString::fromStdString(mission_->name)));
   raw_view_->setSonar(mission_->sonar);
@@ -833,8 +862,6 @@ void MainWindow::importLog(const ImportRequest& request) {
 void MainWindow::openPath(const QString& path) {
   if (path.endsWith(".sonarcarve")) {
     openSession(path);
-  } else if (QFileInfo(path).isFile() && looksLikeOculusLog(path.toStdString())) {
-    importWithDialog(path);
   } else {
     openMission(path);
   }

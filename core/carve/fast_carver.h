@@ -12,21 +12,12 @@
 #include <vector>
 
 #include "carve/carve_params.h"
+#include "carve/carver.h"
 #include "carve/carving_geometry.h"
 #include "carve/voxel_map.h"
 #include "common/thread_pool.h"
 
 namespace sonarcarve {
-
-/// For occlusion-aware carving: the range of the first surface in each (beam, elevation bin)
-/// cell of a frame (OcclusionResolver::firstReturnRanges). A voxel farther than that range
-/// plus `margin_m` is hidden behind the surface: the frame did not observe it and leaves it.
-struct VisibilityLimit {
-  const std::vector<float>* first_return_m = nullptr;
-  int elevation_bins = 1;
-  double elevation_step_rad = 0.0;
-  double margin_m = 0.0;
-};
 
 struct IntegrateStats {
   std::size_t blocks_visited = 0;  ///< blocks of the frustum's box that were not yet free

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/csv_table.h"
+#include "io/frame_source.h"
 #include "io/frame_png.h"
 #include "io/nav_csv.h"
 #include "io/sonar_yaml.h"
@@ -32,7 +33,64 @@ std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& path) {
   return frames;
 }
 
+// The frames of a mission folder: 16-bit PNGs named by the frame index.
+class MissionFolderSource final : public FrameSource {
+ public:
+  explicit MissionFolderSource(const Mission& mission)
+      : folder_(mission.folder), sonar_(mission.sonar), frames_(mission.frames) {}
+
+  std::string kind() const override { return "mission folder"; }
+  std::size_t size() const override { return frames_.size(); }
+  Frame load(std::size_t index) const override {
+    const FrameRecord& record = frames_.at(index);
+    const std::filesystem::path path = folder_ / record.file;
+    Frame frame;
+    frame.time_s = record.time_s;
+    frame.sonar_id = record.sonar_id;
+    if (record.sonar_id != sonar_.id()) {
+      throw Error(path.string(), "frame " + std::to_string(index),
+                  "sonar id '" + record.sonar_id + "' is not the mission's sonar '" + sonar_.id() +
+                      "'");
+    }
+    frame.image = readFramePng(path);
+    if (frame.image.rows != sonar_.rows() || frame.image.cols != sonar_.cols()) {
+      throw Error(path.string(), "frame " + std::to_string(index),
+                  "image is " + std::to_string(frame.image.rows) + " x " +
+                      std::to_string(frame.image.cols) + " (rows x cols), expected " +
+                      std::to_string(sonar_.rows()) + " range bins x " +
+                      std::to_string(sonar_.cols()) + " beams");
+    }
+    return frame;
+  }
+
+ private:
+  std::filesystem::path folder_;
+  SonarModel sonar_;
+  std::vector<FrameRecord> frames_;
+};
+
+// A folder holding mission.yaml, or a YAML file that says it is a mission.
+bool looksLikeMission(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    return std::filesystem::is_regular_file(path / kMissionFileName, ec);
+  }
+  return path.filename() == kMissionFileName && std::filesystem::is_regular_file(path, ec);
+}
+
+[[maybe_unused]] const bool registered = registerFrameSourceReader(
+    {"mission folder", looksLikeMission,
+     [](const std::filesystem::path& path, const OpenOptions& options) {
+       Mission mission = readMission(path);
+       applyOpenOptions(mission, options);
+       return mission;
+     }});
+
 }  // namespace
+
+std::shared_ptr<const FrameSource> makeMissionFolderSource(const Mission& mission) {
+  return std::make_shared<const MissionFolderSource>(mission);
+}
 
 Mission readMission(const std::filesystem::path& folder_or_yaml) {
   const bool is_dir = std::filesystem::is_directory(folder_or_yaml);
@@ -67,29 +125,20 @@ Mission readMission(const std::filesystem::path& folder_or_yaml) {
 
   NavTrack nav = readNavCsv(folder / nav_file);
   std::vector<FrameRecord> frames = readFrameIndex(folder / index_file);
-  return Mission{folder,         std::move(name),   std::move(sonar), mounting,
-                 std::move(nav), std::move(frames), nav_file,         index_file};
+  Mission mission{folder,         std::move(name),   std::move(sonar), mounting,
+                  std::move(nav), std::move(frames), nav_file,         index_file,
+                  nullptr,        {}};
+  mission.source = makeMissionFolderSource(mission);
+  return mission;
 }
 
 Frame loadFrame(const Mission& mission, std::size_t index) {
-  const FrameRecord& record = mission.frames.at(index);
-  const std::filesystem::path path = mission.folder / record.file;
-  Frame frame;
-  frame.time_s = record.time_s;
-  frame.sonar_id = record.sonar_id;
-  if (record.sonar_id != mission.sonar.id()) {
-    throw Error(path.string(), "frame " + std::to_string(index),
-                "sonar id '" + record.sonar_id + "' is not the mission's sonar '" +
-                    mission.sonar.id() + "'");
+  if (!mission.source) {
+    throw Error(mission.folder.string(), "frame " + std::to_string(index),
+                "the mission has no frame source");
   }
-  frame.image = readFramePng(path);
-  if (frame.image.rows != mission.sonar.rows() || frame.image.cols != mission.sonar.cols()) {
-    throw Error(path.string(), "frame " + std::to_string(index),
-                "image is " + std::to_string(frame.image.rows) + " x " +
-                    std::to_string(frame.image.cols) + " (rows x cols), expected " +
-                    std::to_string(mission.sonar.rows()) + " range bins x " +
-                    std::to_string(mission.sonar.cols()) + " beams");
-  }
+  Frame frame = mission.source->load(index);
+  frame.time_s = mission.frames.at(index).time_s;
   return frame;
 }
 

@@ -6,9 +6,13 @@
 // readMission() reads the header, the navigation and the frame index eagerly and throws an
 // Error for any problem in them; frame images are read on demand by loadFrame(), so a corrupt
 // frame is reported and skipped by the caller, never fatal to a run.
+//
+// A Mission is also what any other recording opens as (io/frame_source.h: an Oculus log with a
+// navigation CSV beside it): its `source` reads the frames, wherever they are.
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,10 +26,12 @@ namespace sonarcarve {
 inline constexpr int kMissionFormatVersion = 1;
 inline constexpr const char* kMissionFileName = "mission.yaml";
 
+class FrameSource;
+
 struct FrameRecord {
-  double time_s = 0.0;
+  double time_s = 0.0;  ///< on the navigation's clock: authoritative over the source's
   std::string sonar_id;
-  std::string file;    ///< relative to the mission folder
+  std::string file;    ///< relative to the mission folder; for other recordings, where in it
   int index_line = 0;  ///< line in the frame index, for messages
 };
 
@@ -38,6 +44,11 @@ struct Mission {
   std::vector<FrameRecord> frames;
   std::string nav_file = "nav.csv";
   std::string frame_index_file = "frames.csv";
+  /// Reads the frames (a mission folder's PNGs, a vendor log's pings).
+  std::shared_ptr<const FrameSource> source;
+  /// What the reader assumed or skipped that the user should know (printed by the CLI,
+  /// logged by the GUI).
+  std::vector<std::string> warnings;
 };
 
 /// A frame that could not be used, with the reason.
@@ -51,9 +62,12 @@ struct FrameProblem {
 /// going backwards.
 Mission readMission(const std::filesystem::path& folder_or_yaml);
 
-/// Loads frame `index`; throws Error naming the file if the image is unreadable, truncated,
-/// corrupt or does not match the sonar model's size.
+/// Loads frame `index` through the mission's source; throws Error naming the file if the image
+/// is unreadable, truncated, corrupt or does not match the sonar model's size.
 Frame loadFrame(const Mission& mission, std::size_t index);
+
+/// The source that reads a mission folder's PNG frames (readMission attaches it).
+std::shared_ptr<const FrameSource> makeMissionFolderSource(const Mission& mission);
 
 /// Tries to load every frame; returns those that fail, in index order.
 std::vector<FrameProblem> checkFrames(const Mission& mission);

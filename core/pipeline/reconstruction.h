@@ -1,52 +1,31 @@
-// The one orchestrator of a reconstruction: mission frames -> carving -> occlusion resolution
-// -> surface points, with progress, cancellation (checked between frames and inside long
-// loops) and map updates for viewers. The GUI and the CLI both call reconstruct(); neither
-// re-implements a step.
-//
-// Map updates: every `update_every` frames the observer receives, as values, the occupied
-// voxels of each block that changed since the previous update (a block with no points has
-// become empty). Together the updates always describe the map as carved so far, so a viewer
-// that applies them in order shows a consistent map while it grows. Observer calls come from
-// the thread running reconstruct().
+// The one orchestrator of a reconstruction, as named stages (docs/architecture.md):
+//   read (select and place frames) -> denoise -> carve -> occlusion -> surface -> mesh -> report
+// with progress, cancellation (checked between frames and inside long loops) and map updates
+// for viewers (pipeline/map_updates.h). The GUI and the CLI both run a Pipeline; neither
+// re-implements a step. Each stage is a unit of its own (frame_stage, carve_stage,
+// surface_stage, report) with its own parameters and tests.
 #pragma once
 
 #include <Eigen/Geometry>
 #include <memory>
 #include <vector>
 
+#include "carve/carver.h"
 #include "carve/voxel_map.h"
 #include "common/progress.h"
 #include "io/mission.h"
 #include "mesh/surface_mesher.h"
 #include "occlusion/surface_points.h"
+#include "pipeline/map_updates.h"
 #include "pipeline/reconstruction_params.h"
 
 namespace sonarcarve {
 
-struct MapBlockUpdate {
-  std::size_t block = 0;
-  std::vector<Eigen::Vector3f> points;  ///< occupied voxel centres, world NED
-  std::vector<float> values;            ///< their carved intensities
-};
-
-struct MapUpdate {
-  std::size_t frames_done = 0;
-  std::vector<MapBlockUpdate> blocks;
-};
-
-class ReconstructionObserver {
- public:
-  virtual ~ReconstructionObserver() = default;
-  virtual void frameCarved(std::size_t /*frame_index*/, const Frame& /*frame*/,
-                           const Eigen::Isometry3d& /*T_world_sonar*/) {}
-  virtual void mapUpdated(const MapUpdate& /*update*/) {}
-  virtual void frameSkipped(const FrameProblem& /*problem*/) {}
-};
-
 struct ReconstructionResult {
   SurfacePoints surface;
-  Mesh mesh;                      ///< empty when meshing is off or there are too few points
-  std::unique_ptr<VoxelMap> map;  ///< the carved map (fast engine)
+  Mesh mesh;                        ///< empty when meshing is off or there are too few points
+  std::unique_ptr<Carver> carver;   ///< the carved map, whatever the engine
+  const VoxelMap* map = nullptr;    ///< the carver's block map (fast engine), or null
   std::size_t frames_used = 0;
   std::vector<FrameProblem> skipped;
   bool cancelled = false;
@@ -57,8 +36,30 @@ struct ReconstructionResult {
   double total_s = 0.0;
 };
 
-/// Runs the reconstruction. Throws Error if no frame can be used; on cancellation returns
-/// with `cancelled` set and whatever was finished.
+class Pipeline {
+ public:
+  /// Validates the parameters (Error naming the parameter). `mission` and `pool` must outlive
+  /// the pipeline.
+  Pipeline(const Mission& mission, ReconstructionParams params, ThreadPool& pool);
+
+  /// Runs every stage. Throws Error if no frame can be used; on cancellation returns with
+  /// `cancelled` set and whatever was finished. `observer` hears of frames and map updates
+  /// (every `update_every` frames).
+  ReconstructionResult run(Progress& progress, ReconstructionObserver* observer = nullptr,
+                           std::size_t update_every = 1) const;
+
+  /// The sonar as carving sees it (the parameters may narrow its vertical aperture).
+  const SonarModel& sonar() const { return sonar_; }
+  const ReconstructionParams& params() const { return params_; }
+
+ private:
+  const Mission& mission_;
+  ReconstructionParams params_;
+  SonarModel sonar_;
+  ThreadPool& pool_;
+};
+
+/// Runs a Pipeline on the shared pool (for callers without one of their own).
 ReconstructionResult reconstruct(const Mission& mission, const ReconstructionParams& params,
                                  Progress& progress, ReconstructionObserver* observer = nullptr,
                                  std::size_t update_every = 1);

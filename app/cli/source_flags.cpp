@@ -1,0 +1,72 @@
+#include "cli/source_flags.h"
+
+#include "common/error.h"
+
+namespace sonarcarve::cli {
+namespace {
+
+// "KEY=VALUE" -> key, value; throws a user error otherwise.
+std::pair<std::string, std::string> keyValue(const std::string& text, const std::string& flag) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw Error(flag, "", "expected KEY=VALUE, found '" + text + "'");
+  }
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+}  // namespace
+
+void addSourceFlags(CLI::App& cmd, SourceFlags& flags) {
+  cmd.add_option("--nav", flags.nav,
+                 "Navigation CSV (default columns: time_s,north_m,east_m,down_m,roll_deg,"
+                 "pitch_deg,yaw_deg); replaces a mission's own; a vendor log without it is "
+                 "stationary at the origin");
+  cmd.add_option("--nav-map", flags.nav_map, "Column mapping YAML for --nav (docs/formats.md)");
+  cmd.add_option("--nav-column", flags.nav_columns,
+                 "ROLE=COLUMN for --nav, repeatable: roles time, north, east, down|depth, "
+                 "up|altitude, roll, pitch, yaw|heading; COLUMN is a header name or a 0-based "
+                 "index")
+      ->allow_extra_args(false);
+  cmd.add_option("--nav-set", flags.nav_settings,
+                 "KEY=VALUE for --nav, repeatable: units.time=s|ms|us, units.position=m|ft, "
+                 "units.angles=deg|rad, conventions.heading=compass|enu, "
+                 "conventions.pitch=bow_up|bow_down, conventions.roll=starboard_down|port_down, "
+                 "delimiter=,|;|tab, header=true|false")
+      ->allow_extra_args(false);
+  cmd.add_option("--mounting", flags.mounting,
+                 "Mounting YAML: translation_m and roll_pitch_yaw_deg of the sonar on the "
+                 "vehicle");
+  cmd.add_option("--time-offset", flags.time_offset_s,
+                 "Seconds added to the frame times to put them on the navigation clock")
+      ->capture_default_str();
+  cmd.add_option("--aperture-deg", flags.aperture_deg,
+                 "Vertical aperture (Oculus default: 20 below 1.5 MHz, 12 above)");
+}
+
+OpenOptions openOptionsFrom(const SourceFlags& flags) {
+  OpenOptions options;
+  options.nav_csv = flags.nav;
+  options.mounting = flags.mounting;
+  options.time_offset_s = flags.time_offset_s;
+  if (flags.aperture_deg > 0.0) {
+    options.vertical_aperture_deg = flags.aperture_deg;
+  }
+  if (!flags.nav_map.empty()) {
+    options.nav_mapping = readNavMapping(flags.nav_map);
+  }
+  for (const std::string& c : flags.nav_columns) {
+    const auto [role, column] = keyValue(c, "--nav-column");
+    setNavMapping(options.nav_mapping, "columns." + role, column, "--nav-column");
+  }
+  for (const std::string& s : flags.nav_settings) {
+    const auto [key, value] = keyValue(s, "--nav-set");
+    setNavMapping(options.nav_mapping, key, value, "--nav-set");
+  }
+  if (flags.nav.empty() &&
+      (!flags.nav_map.empty() || !flags.nav_columns.empty() || !flags.nav_settings.empty())) {
+    throw Error("--nav-map", "", "a navigation mapping needs --nav NAV.csv");
+  }
+  return options;
+}
+
+}  // namespace sonarcarve::cli

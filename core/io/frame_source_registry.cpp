@@ -1,0 +1,80 @@
+#include <mutex>
+
+#include "common/angles.h"
+#include "common/error.h"
+#include "io/frame_source.h"
+#include "io/import.h"
+#include "io/nav_import.h"
+
+namespace sonarcarve {
+namespace {
+
+// Function-local: readers register from static initialisers of other files.
+struct Registry {
+  std::mutex mutex;
+  std::vector<FrameSourceReader> readers;
+};
+
+Registry& registry() {
+  static Registry instance;
+  return instance;
+}
+
+std::vector<FrameSourceReader> readers() {
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  return r.readers;
+}
+
+}  // namespace
+
+bool registerFrameSourceReader(FrameSourceReader reader) {
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  r.readers.push_back(std::move(reader));
+  return true;
+}
+
+std::vector<std::string> frameSourceReaderNames() {
+  std::vector<std::string> names;
+  for (const FrameSourceReader& reader : readers()) {
+    names.push_back(reader.name);
+  }
+  return names;
+}
+
+Mission openMission(const std::filesystem::path& path, const OpenOptions& options) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    throw Error(path.string(), "", "no such file or folder");
+  }
+  std::string known;
+  for (const FrameSourceReader& reader : readers()) {
+    if (reader.recognises(path)) {
+      return reader.open(path, options);
+    }
+    known += (known.empty() ? "" : ", ") + reader.name;
+  }
+  throw Error(path.string(), "",
+              "not a recording this build reads (expected one of: " + known + ")");
+}
+
+void applyOpenOptions(Mission& mission, const OpenOptions& options) {
+  if (!options.nav_csv.empty()) {
+    mission.nav = importNavCsv(options.nav_csv, options.nav_mapping);
+    mission.nav_file = options.nav_csv.string();
+  }
+  if (!options.mounting.empty()) {
+    mission.mounting = readMountingYaml(options.mounting);
+  }
+  if (options.time_offset_s != 0.0) {
+    for (FrameRecord& record : mission.frames) {
+      record.time_s += options.time_offset_s;
+    }
+  }
+  if (options.vertical_aperture_deg) {
+    mission.sonar = mission.sonar.withVerticalAperture(degToRad(*options.vertical_aperture_deg));
+  }
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,116 @@
+#include "pipeline/carve_stage.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "carve/carving_geometry.h"
+#include "common/error.h"
+#include "occlusion/occlusion_resolver.h"
+
+namespace sonarcarve {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+CarveStage::CarveStage(const SonarModel& sonar, CarveStageParams params, ThreadPool& pool)
+    : sonar_(sonar), params_(std::move(params)), pool_(pool) {}
+
+Eigen::AlignedBox3d CarveStage::mapBounds(const std::vector<PosedFrame>& frames) const {
+  const CarvingGeometry geometry(sonar_, params_.carve);
+  Eigen::AlignedBox3d bounds;
+  for (const PosedFrame& f : frames) {
+    bounds.extend(geometry.frustumBounds(f.T_world_sonar));
+  }
+  if (params_.carve.region) {
+    bounds = bounds.intersection(*params_.carve.region);
+  }
+  if (bounds.isEmpty()) {
+    throw Error("parameters", "region", "the region of interest is outside every frame's view");
+  }
+  return bounds;
+}
+
+CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
+                                 const DenoisedFrames& source, Progress& progress,
+                                 MapUpdateSink* updates,
+                                 const std::function<void(const FrameProblem&)>& skip) const {
+  CarveStageResult result;
+  result.carve = params_.carve;
+  result.carve.region = mapBounds(frames);
+  if (source.probabilities()) {
+    result.carve.fusion = CarveParams::Fusion::LogOdds;
+    result.carve.intensity_threshold = 0.0;
+  }
+  result.carver = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
+  for (std::size_t n = 0; n < frames.size(); ++n) {
+    if (progress.cancelled()) {
+      result.cancelled = true;
+      break;
+    }
+    const PosedFrame& f = frames[n];
+    Frame frame;
+    try {
+      frame = source.load(f.index);
+    } catch (const Error& e) {
+      skip({f.index, e.what()});
+      continue;
+    }
+    const auto t0 = Clock::now();
+    const auto stamp = static_cast<std::uint32_t>(n + 1);
+    result.carver->integrate(frame.image, f.T_world_sonar, stamp);
+    result.carve_ms.push_back(msSince(t0));
+    result.used.push_back(f);
+    if (updates != nullptr) {
+      updates->observer().frameCarved(f.index, frame, f.T_world_sonar);
+      updates->frameDone(result.carver->blockMap(), result.used.size(), n + 1 == frames.size(),
+                         stamp);
+    }
+    progress.report("carve", n + 1, frames.size());
+  }
+  if (params_.occlusion_aware && !result.cancelled && !result.used.empty() &&
+      result.carver->supportsVisibilityLimit()) {
+    refine(result, source, progress, updates);
+  }
+  return result;
+}
+
+void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source,
+                        Progress& progress, MapUpdateSink* updates) const {
+  const VoxelValues candidates = surfaceCandidates(*result.carver);
+  const OcclusionResolver first_surface(candidates.voxels, candidates.values, sonar_,
+                                        result.carve);
+  auto refined = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
+  VisibilityLimit limit;
+  limit.elevation_bins = first_surface.elevationBins();
+  limit.elevation_step_rad = result.carve.elevation_step_rad;
+  // The surface voxel itself and the range bin it falls in stay observable.
+  limit.margin_m = std::sqrt(3.0) * result.carve.voxel_size_m + sonar_.range().resolution_m;
+  for (std::size_t n = 0; n < result.used.size() && !progress.cancelled(); ++n) {
+    Frame frame;
+    try {
+      frame = source.load(result.used[n].index);
+    } catch (const Error&) {
+      continue;  // it loaded in the first pass; a file changed under us is skipped again
+    }
+    const std::vector<float> first = first_surface.firstReturnRanges(result.used[n].T_world_sonar);
+    limit.first_return_m = &first;
+    const auto t0 = Clock::now();
+    refined->integrate(frame.image, result.used[n].T_world_sonar,
+                       static_cast<std::uint32_t>(n + 1), limit);
+    result.carve_ms[n] += msSince(t0);
+    progress.report("refine", n + 1, result.used.size());
+  }
+  result.cancelled = progress.cancelled();
+  if (updates != nullptr && refined->blockMap() != nullptr) {
+    updates->replaced(*refined->blockMap(), result.carver->blockMap(), result.used.size());
+  }
+  result.carver = std::move(refined);
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,55 @@
+// The carving stage: every placed frame, denoised, integrated by the chosen engine into a map
+// that covers what the frames can see (within the region of interest), with map updates for
+// viewers as it grows; optionally a second, occlusion-aware pass.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "carve/carver.h"
+#include "common/progress.h"
+#include "pipeline/frame_stage.h"
+#include "pipeline/map_updates.h"
+
+namespace sonarcarve {
+
+struct CarveStageParams {
+  CarverEngine engine = CarverEngine::Fast;
+  CarveParams carve;
+  /// Second pass in which each frame carves only what it sees past the first pass's surface.
+  bool occlusion_aware = false;
+};
+
+struct CarveStageResult {
+  std::unique_ptr<Carver> carver;
+  std::vector<PosedFrame> used;  ///< frames that loaded and were carved
+  std::vector<double> carve_ms;  ///< per used frame (both passes)
+  CarveParams carve;             ///< the parameters as used: region = the map's bounds
+  bool cancelled = false;
+};
+
+class CarveStage {
+ public:
+  CarveStage(const SonarModel& sonar, CarveStageParams params, ThreadPool& pool);
+
+  /// The box the map must cover: the union of the frames' frustums, clipped to the region of
+  /// interest. Throws Error if that is empty.
+  Eigen::AlignedBox3d mapBounds(const std::vector<PosedFrame>& frames) const;
+
+  /// Carves `frames` read through `source`. A frame that fails to load is passed to `skip`;
+  /// `updates`, when set, receives each carved frame and the map's changes. Cancellable
+  /// between frames.
+  CarveStageResult run(const std::vector<PosedFrame>& frames, const DenoisedFrames& source,
+                       Progress& progress, MapUpdateSink* updates,
+                       const std::function<void(const FrameProblem&)>& skip) const;
+
+ private:
+  void refine(CarveStageResult& result, const DenoisedFrames& source, Progress& progress,
+              MapUpdateSink* updates) const;
+
+  const SonarModel& sonar_;
+  CarveStageParams params_;
+  ThreadPool& pool_;
+};
+
+}  // namespace sonarcarve

@@ -1,0 +1,53 @@
+// The pipeline's first stages: which frames take part and where the sonar was for each
+// (read), and the noise removal every frame goes through before carving (denoise).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "denoise/detector.h"
+#include "io/mission.h"
+
+namespace sonarcarve {
+
+/// Frames used: [first, last) every `stride`-th; last < 0 means to the end.
+struct FrameSelection {
+  std::size_t first = 0;
+  long last = -1;
+  std::size_t stride = 1;
+};
+
+struct PosedFrame {
+  std::size_t index = 0;  ///< in the mission
+  Eigen::Isometry3d T_world_sonar = Eigen::Isometry3d::Identity();
+};
+
+/// Indices of the frames a selection takes from a mission of `count` frames.
+std::vector<std::size_t> selectFrames(std::size_t count, const FrameSelection& selection);
+
+/// The selected frames with their sonar poses. Frames outside the navigation's time span
+/// cannot be placed: each is passed to `skip` with the reason and left out.
+std::vector<PosedFrame> placeFrames(const Mission& mission, const FrameSelection& selection,
+                                    const std::function<void(const FrameProblem&)>& skip);
+
+/// Reads a frame of the mission and removes its noise. Thread safe.
+class DenoisedFrames {
+ public:
+  /// Loads the noise model file `noise_model` (empty: none) and builds the detector; throws
+  /// Error naming the file or the parameter on a problem.
+  DenoisedFrames(const Mission& mission, const SonarModel& sonar, const DetectorParams& detector,
+                 const std::string& noise_model);
+  /// Throws Error naming the frame's file if it cannot be read.
+  Frame load(std::size_t index) const;
+  const Detector& detector() const { return *detector_; }
+  /// True when frames carry detection probabilities (fused as log-odds), not intensities.
+  bool probabilities() const;
+
+ private:
+  const Mission& mission_;
+  std::shared_ptr<const Detector> detector_;
+};
+
+}  // namespace sonarcarve

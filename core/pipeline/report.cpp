@@ -1,0 +1,56 @@
+#include "pipeline/report.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "eval/evaluator.h"
+#include "io/frame_source.h"
+#include "sim/scene_io.h"
+
+namespace sonarcarve {
+
+std::string reconstructionReport(const Mission& mission, const ReconstructionParams& params,
+                                 const ReconstructionResult& result) {
+  nlohmann::json report = {{"mission", mission.folder.string()},
+                           {"engine", params.engine},
+                           {"detector", params.detector.resolved(!params.noise_model.empty()).mode},
+                           {"smoothing", params.detector.smoothing},
+                           {"z", params.detector.z},
+                           {"frames_used", result.frames_used},
+                           {"frames_skipped", result.skipped.size()},
+                           {"cancelled", result.cancelled},
+                           {"occupied_voxels", result.occupied_voxels},
+                           {"surface_points", result.surface.size()},
+                           {"mesh_vertices", result.mesh.vertices.size()},
+                           {"mesh_triangles", result.mesh.triangles.size()},
+                           {"map_megabytes", static_cast<double>(result.map_bytes) / 1e6},
+                           {"carve_ms_per_frame_median", result.carve_ms_median},
+                           {"occlusion_ms_per_frame", result.occlusion_ms_per_frame},
+                           {"total_s", result.total_s}};
+  if (mission.source) {
+    report["source"] = mission.source->kind();
+  }
+  if (!mission.warnings.empty()) {
+    report["warnings"] = mission.warnings;
+  }
+  std::error_code ec;
+  const auto truth = mission.folder / "ground_truth.ply";
+  if (std::filesystem::is_regular_file(truth, ec) && !result.surface.empty()) {
+    const std::vector<Eigen::Vector3f> points = positionsOf(result.surface);
+    // Ground truth read once, for the points and for the mesh.
+    const Scene truth_mesh = loadSceneMesh(truth);
+    const auto visible_file = mission.folder / "visible_points.ply";
+    const std::vector<Eigen::Vector3f> visible = std::filesystem::exists(visible_file, ec)
+                                                     ? readPointsPly(visible_file)
+                                                     : std::vector<Eigen::Vector3f>{};
+    report["evaluation"] = nlohmann::json::parse(evaluate(points, truth_mesh, visible).toJson());
+    if (!result.mesh.vertices.empty()) {
+      // Mesh accuracy: distance from the mesh vertices to the ground truth.
+      report["mesh_evaluation"] =
+          nlohmann::json::parse(evaluate(result.mesh.vertices, truth_mesh, visible).toJson());
+    }
+  }
+  return report.dump(2) + "\n";
+}
+
+}  // namespace sonarcarve
