@@ -99,6 +99,7 @@ int runReconstruct(const ReconstructOptions& o) {
   const ReconstructionResult result =
       Pipeline(mission, params, ThreadPool::shared()).run(progress);
   progress.finish();
+  std::cerr << "denoising: " << result.detector << ", " << result.denoising << "\n";
   for (const FrameProblem& p : result.skipped) {
     std::cerr << "skipped: " << p.message << "\n";
   }

@@ -9,7 +9,7 @@
 namespace sonarcarve {
 
 NoiseModel::NoiseModel(cv::Mat mean, cv::Mat stddev, cv::Mat rayleigh_sigma,
-                       const SonarModel& sonar, int frames)
+                       const SonarModel& sonar, int frames, int smoothing)
     : mean_(std::move(mean)),
       stddev_(std::move(stddev)),
       rayleigh_sigma_(std::move(rayleigh_sigma)),
@@ -17,7 +17,8 @@ NoiseModel::NoiseModel(cv::Mat mean, cv::Mat stddev, cv::Mat rayleigh_sigma,
       range_resolution_m_(sonar.range().resolution_m),
       bearings_rad_(sonar.bearings().centres()),
       vertical_aperture_rad_(sonar.verticalAperture()),
-      frames_(frames) {
+      frames_(frames),
+      smoothing_(smoothing) {
   checkGeometry(sonar, "noise model");
 }
 

@@ -40,7 +40,7 @@ class NoiseModel {
 
   /// A model from given statistics (tests, other learners). All CV_32F of one size.
   NoiseModel(cv::Mat mean, cv::Mat stddev, cv::Mat rayleigh_sigma, const SonarModel& sonar,
-             int frames);
+             int frames, int smoothing = 1);
 
  private:
   NoiseModel() = default;

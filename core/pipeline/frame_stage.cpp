@@ -1,6 +1,9 @@
 #include "pipeline/frame_stage.h"
 
 #include <algorithm>
+#include <cstdio>
+
+#include "denoise/mission_noise_model.h"
 
 namespace sonarcarve {
 
@@ -30,15 +33,47 @@ std::vector<PosedFrame> placeFrames(const Mission& mission, const FrameSelection
   return posed;
 }
 
-DenoisedFrames::DenoisedFrames(const Mission& mission, const SonarModel& sonar,
-                               const DetectorParams& detector, const std::string& noise_model)
-    : mission_(mission) {
-  std::shared_ptr<const NoiseModel> model;
+NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFrame>& frames,
+                             const DetectorParams& detector, const std::string& noise_model,
+                             Progress& progress) {
+  NoiseChoice choice;
   if (!noise_model.empty()) {
-    model = std::make_shared<const NoiseModel>(NoiseModel::load(noise_model));
+    choice.model = std::make_shared<const NoiseModel>(NoiseModel::load(noise_model));
+    choice.detector = detector.resolved(true);
+    choice.reason = "noise model " + noise_model;
+    return choice;
   }
-  detector_ = std::make_shared<const Detector>(detector, model, sonar);
+  choice.detector = detector.resolved(false);
+  if (detector.mode != "auto") {
+    choice.reason = detector.mode == "none" ? "no denoising (detector none)"
+                                            : "detector " + detector.mode + ", no noise model";
+    return choice;
+  }
+  std::vector<std::size_t> indices;
+  for (const PosedFrame& f : frames) {
+    indices.push_back(f.index);
+  }
+  MissionNoiseStats stats;
+  NoiseModel learned =
+      learnNoiseFromMission(mission, indices, detector.smoothing, progress, &stats);
+  if (!stats.has_background()) {
+    choice.reason = "no denoising: the frames carry no background noise (noise-free)";
+    return choice;
+  }
+  choice.model = std::make_shared<const NoiseModel>(std::move(learned));
+  choice.detector = detector.resolved(true);
+  char structure[32];
+  std::snprintf(structure, sizeof structure, "%.1f", 100.0 * stats.structure_fraction);
+  choice.reason = "noise model learned from " + std::to_string(stats.frames_used) +
+                  " of the mission's own frames (no empty-water model given; " + structure +
+                  " % of pixels held structure in most frames)";
+  return choice;
 }
+
+DenoisedFrames::DenoisedFrames(const Mission& mission, const SonarModel& sonar,
+                               const NoiseChoice& noise)
+    : mission_(mission),
+      detector_(std::make_shared<const Detector>(noise.detector, noise.model, sonar)) {}
 
 Frame DenoisedFrames::load(std::size_t index) const {
   Frame frame = loadFrame(mission_, index);

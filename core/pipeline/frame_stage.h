@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "common/progress.h"
 #include "denoise/detector.h"
 #include "io/mission.h"
 
@@ -32,13 +33,26 @@ std::vector<std::size_t> selectFrames(std::size_t count, const FrameSelection& s
 std::vector<PosedFrame> placeFrames(const Mission& mission, const FrameSelection& selection,
                                     const std::function<void(const FrameProblem&)>& skip);
 
+/// The noise model the denoise stage uses, and why, in words for reports and the GUI.
+struct NoiseChoice {
+  std::shared_ptr<const NoiseModel> model;  ///< null: none
+  DetectorParams detector;                  ///< `auto` made concrete
+  std::string reason;
+};
+
+/// Chooses the noise model: the file `noise_model` when given; for the `auto` detector
+/// without one, a model learned from the placed frames themselves
+/// (denoise/mission_noise_model.h), or no denoising when the frames carry no background at
+/// all (noise-free simulations). Throws Error naming the file on a bad model file.
+NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFrame>& frames,
+                             const DetectorParams& detector, const std::string& noise_model,
+                             Progress& progress);
+
 /// Reads a frame of the mission and removes its noise. Thread safe.
 class DenoisedFrames {
  public:
-  /// Loads the noise model file `noise_model` (empty: none) and builds the detector; throws
-  /// Error naming the file or the parameter on a problem.
-  DenoisedFrames(const Mission& mission, const SonarModel& sonar, const DetectorParams& detector,
-                 const std::string& noise_model);
+  /// Builds the detector; throws Error naming the parameter on a problem.
+  DenoisedFrames(const Mission& mission, const SonarModel& sonar, const NoiseChoice& noise);
   /// Throws Error naming the frame's file if it cannot be read.
   Frame load(std::size_t index) const;
   const Detector& detector() const { return *detector_; }

@@ -67,7 +67,11 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   const CarveStage carving(sonar_, {engineOf(params_), params_.carve, params_.occlusion_aware_carving},
                            pool_);
   carving.mapBounds(posed);  // a region outside every view is an error before any file is read
-  const DenoisedFrames frames(mission_, sonar_, params_.detector, params_.noise_model);
+  const NoiseChoice noise =
+      chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);
+  result.detector = noise.detector.mode;
+  result.denoising = noise.reason;
+  const DenoisedFrames frames(mission_, sonar_, noise);
   std::optional<MapUpdateSink> updates;
   if (observer) {
     updates.emplace(*observer, update_every);

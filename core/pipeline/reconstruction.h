@@ -27,6 +27,8 @@ struct ReconstructionResult {
   std::unique_ptr<Carver> carver;   ///< the carved map, whatever the engine
   const VoxelMap* map = nullptr;    ///< the carver's block map (fast engine), or null
   std::size_t frames_used = 0;
+  std::string detector;   ///< the detector that ran (`auto` made concrete)
+  std::string denoising;  ///< which noise model it used and why, in words
   std::vector<FrameProblem> skipped;
   bool cancelled = false;
   std::size_t occupied_voxels = 0;  ///< all occupied voxels of the carved map

@@ -13,7 +13,8 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                                  const ReconstructionResult& result) {
   nlohmann::json report = {{"mission", mission.folder.string()},
                            {"engine", params.engine},
-                           {"detector", params.detector.resolved(!params.noise_model.empty()).mode},
+                           {"detector", result.detector},
+                           {"denoising", result.denoising},
                            {"smoothing", params.detector.smoothing},
                            {"z", params.detector.z},
                            {"frames_used", result.frames_used},

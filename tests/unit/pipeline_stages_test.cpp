@@ -84,7 +84,9 @@ class CarveStageTest : public ::testing::Test {
   CarveStageResult carve(const Mission& mission, Progress& progress, Skipped& skipped,
                          CarveStageParams params = {}) {
     const auto posed = placeFrames(mission, {}, skipped.sink());
-    const DenoisedFrames frames(mission, mission.sonar, detector_, "");
+    NoiseChoice none;
+    none.detector = detector_;
+    const DenoisedFrames frames(mission, mission.sonar, none);
     return CarveStage(mission.sonar, params, pool_).run(posed, frames, progress, nullptr,
                                                         skipped.sink());
   }

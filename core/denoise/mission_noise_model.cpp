@@ -1,0 +1,181 @@
+#include "denoise/mission_noise_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+
+// Standard deviation of a Gaussian from its interquartile range.
+constexpr float kIqrToSigma = 1.0f / 1.349f;
+// Samples farther than this many robust standard deviations from the median are clipped.
+constexpr float kClipSigmas = 3.0f;
+// A pixel brighter than the background's shape by this many robust spreads of the fit's
+// residuals is structure.
+constexpr double kStructureSpreads = 5.0;
+
+struct PixelStats {
+  float mean = 0.0f;
+  float stddev = 0.0f;
+};
+
+// Sigma-clipped mean and standard deviation of one pixel's samples (sorted in place).
+PixelStats clippedStats(std::vector<float>& v) {
+  std::sort(v.begin(), v.end());
+  const auto at = [&](double q) { return v[static_cast<std::size_t>(q * (v.size() - 1) + 0.5)]; };
+  const float median = at(0.5);
+  const float spread = (at(0.75) - at(0.25)) * kIqrToSigma;
+  double sum = 0.0, sum_sq = 0.0;
+  int n = 0;
+  for (const float x : v) {
+    if (std::abs(x - median) <= kClipSigmas * spread) {
+      sum += x;
+      sum_sq += static_cast<double>(x) * x;
+      ++n;
+    }
+  }
+  if (n < 2) {
+    return {median, 0.0f};
+  }
+  const double mean = sum / n;
+  const double variance = std::max(0.0, (sum_sq / n - mean * mean) * n / (n - 1));
+  // A 3-sigma clip keeps 99.73 % of a Gaussian and shrinks its standard deviation by 1.3 %.
+  return {static_cast<float>(mean), static_cast<float>(std::sqrt(variance) / 0.9866)};
+}
+
+double median(std::vector<double>& v) {
+  if (v.empty()) {
+    return 0.0;
+  }
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+// Median polish of log(field) over its positive pixels: log field ~ rho(row) + beta(col).
+// Returns the fitted field (0 where a row or column has no positive pixel).
+cv::Mat separableFit(const cv::Mat& field) {
+  const int rows = field.rows, cols = field.cols;
+  std::vector<double> rho(static_cast<std::size_t>(rows), 0.0);
+  std::vector<double> beta(static_cast<std::size_t>(cols), 0.0);
+  std::vector<double> scratch;
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    for (int r = 0; r < rows; ++r) {
+      scratch.clear();
+      for (int c = 0; c < cols; ++c) {
+        const float x = field.at<float>(r, c);
+        if (x > 0.0f) {
+          scratch.push_back(std::log(x) - beta[static_cast<std::size_t>(c)]);
+        }
+      }
+      rho[static_cast<std::size_t>(r)] = scratch.empty() ? -INFINITY : median(scratch);
+    }
+    for (int c = 0; c < cols; ++c) {
+      scratch.clear();
+      for (int r = 0; r < rows; ++r) {
+        const float x = field.at<float>(r, c);
+        if (x > 0.0f && std::isfinite(rho[static_cast<std::size_t>(r)])) {
+          scratch.push_back(std::log(x) - rho[static_cast<std::size_t>(r)]);
+        }
+      }
+      beta[static_cast<std::size_t>(c)] = scratch.empty() ? -INFINITY : median(scratch);
+    }
+  }
+  cv::Mat fit(rows, cols, CV_32F);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      const double log_level = rho[static_cast<std::size_t>(r)] + beta[static_cast<std::size_t>(c)];
+      fit.at<float>(r, c) = std::isfinite(log_level) ? static_cast<float>(std::exp(log_level)) : 0.0f;
+    }
+  }
+  return fit;
+}
+
+}  // namespace
+
+NoiseModel learnNoiseFromMission(const Mission& mission, const std::vector<std::size_t>& frames,
+                                 int smoothing, Progress& progress, MissionNoiseStats* stats,
+                                 std::size_t max_frames) {
+  const int rows = mission.sonar.rows(), cols = mission.sonar.cols();
+  const std::size_t wanted = std::min(frames.size(), std::max<std::size_t>(max_frames, 1));
+  std::vector<cv::Mat> images;
+  for (std::size_t k = 0; k < wanted; ++k) {
+    if (progress.cancelled()) {
+      throw Cancelled();
+    }
+    // Evenly spread over the mission: structure moves through the image along the track.
+    const std::size_t index = frames[k * frames.size() / wanted];
+    try {
+      images.push_back(smoothFrame(loadFrame(mission, index).image, smoothing).clone());
+    } catch (const Error&) {
+      continue;  // the carving stage reports broken frames
+    }
+    progress.report("noise model", k + 1, wanted);
+  }
+  if (images.size() < 8) {
+    throw Error(mission.folder.string(), "noise model",
+                "only " + std::to_string(images.size()) +
+                    " frames could be read: at least 8 are needed to learn the noise from the "
+                    "mission itself; give an empty-water noise model (--noise-model)");
+  }
+
+  cv::Mat mean(rows, cols, CV_32F), stddev(rows, cols, CV_32F);
+  std::vector<float> samples(images.size());
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      for (std::size_t k = 0; k < images.size(); ++k) {
+        samples[k] = images[k].at<float>(r, c);
+      }
+      const PixelStats s = clippedStats(samples);
+      mean.at<float>(r, c) = s.mean;
+      stddev.at<float>(r, c) = s.stddev;
+    }
+  }
+
+  // Pixels lit by structure in most frames stand out above the background's shape.
+  const cv::Mat mean_fit = separableFit(mean);
+  const cv::Mat stddev_fit = separableFit(stddev);
+  std::vector<double> residuals;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      if (mean.at<float>(r, c) > 0.0f && mean_fit.at<float>(r, c) > 0.0f) {
+        residuals.push_back(std::log(mean.at<float>(r, c) / mean_fit.at<float>(r, c)));
+      }
+    }
+  }
+  std::size_t replaced = 0;
+  if (!residuals.empty()) {
+    const double centre = median(residuals);
+    for (double& d : residuals) {
+      d = std::abs(d - centre);
+    }
+    const double spread = 1.4826 * median(residuals);
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < cols; ++c) {
+        const float fitted = mean_fit.at<float>(r, c);
+        if (fitted > 0.0f &&
+            std::log(std::max(mean.at<float>(r, c), 1e-30f) / fitted) - centre >
+                kStructureSpreads * spread) {
+          mean.at<float>(r, c) = fitted;
+          stddev.at<float>(r, c) = stddev_fit.at<float>(r, c);
+          ++replaced;
+        }
+      }
+    }
+  }
+  cv::Mat second = mean.mul(mean) + stddev.mul(stddev);
+  cv::Mat sigma;
+  cv::sqrt(second / 2.0, sigma);
+  if (stats != nullptr) {
+    stats->frames_used = images.size();
+    stats->structure_fraction = static_cast<double>(replaced) / (static_cast<double>(rows) * cols);
+    std::vector<double> levels(mean.begin<float>(), mean.end<float>());
+    stats->background_median = median(levels);
+  }
+  return NoiseModel(mean, stddev, sigma, mission.sonar, static_cast<int>(images.size()),
+                    smoothing);
+}
+
+}  // namespace sonarcarve

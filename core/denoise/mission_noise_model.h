@@ -1,0 +1,43 @@
+// A noise model learned from a mission's own frames, for the many surveys that record no
+// empty water. Returns from structure must not enter it: a pixel's statistics over frames
+// are sigma-clipped (structure is bright, so the frames that lit it fall above the median by
+// more than 3 robust standard deviations and are left out), and where structure stays at the
+// same pixels in most frames (a vertical inspection keeps the riser at one range and bearing),
+// the pixel is recognised against the background's smooth, separable shape and given the
+// shape's value instead.
+//
+// Physics behind the shape: the background is reverberation and electronic noise after the
+// sonar's time-varying gain, a smooth function of range, times the beam pattern's smooth
+// variation across the fan: log level(r, b) = rho(r) + beta(b), fitted by median polish (a
+// robust fit that ignores anything covering less than half a row or a column).
+//
+// Limits: structure that fills a whole range bin across most beams in most frames (a seabed
+// seen at one range for the whole mission, as in a lawnmower pitched down) is learned as
+// background; record empty water for such surveys (docs/denoising.md).
+#pragma once
+
+#include <vector>
+
+#include "common/progress.h"
+#include "denoise/noise_model.h"
+#include "io/mission.h"
+
+namespace sonarcarve {
+
+struct MissionNoiseStats {
+  std::size_t frames_used = 0;
+  double structure_fraction = 0.0;  ///< pixels given the background shape's value
+  double background_median = 0.0;   ///< median over pixels of the learned mean intensity
+  /// True when the frames carry a background at all (speckle): noise-free frames give 0.
+  bool has_background() const { return background_median > 0.0; }
+};
+
+/// Learns from at most `max_frames` of `frames` (indices into the mission, spread evenly),
+/// smoothed with a box of side `smoothing` as the detector will. Broken frames are skipped.
+/// Throws Error if fewer than 8 frames load (too few to separate structure from noise), and
+/// Cancelled if `progress` asks to stop.
+NoiseModel learnNoiseFromMission(const Mission& mission, const std::vector<std::size_t>& frames,
+                                 int smoothing, Progress& progress,
+                                 MissionNoiseStats* stats = nullptr, std::size_t max_frames = 48);
+
+}  // namespace sonarcarve

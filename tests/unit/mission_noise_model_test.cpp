@@ -1,0 +1,117 @@
+// The noise model learned from a mission's own frames against the one learned from an
+// empty-water recording of the same sonar and noise: on a vertical inspection the riser
+// stays at the same pixels in every frame, so this also checks that structure is kept out.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "denoise/mission_noise_model.h"
+#include "pipeline/frame_stage.h"
+#include "sim/demo_scenes.h"
+#include "sim/simulation_run.h"
+#include "support/test_support.h"
+
+namespace sonarcarve {
+namespace {
+
+constexpr int kFrames = 24;
+constexpr int kSmoothing = 3;
+
+class MissionNoise : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new test::ScratchDir();
+    for (const bool empty : {false, true}) {
+      NoiseSpec noise;
+      noise.seed = empty ? 7 : 1;  // independent draws: the two models' errors are independent
+      SimulationRequest request{makeDemoScene("riser"), "riser", paperSonar(), TrajectorySpec{},
+                                {},                     noise,   NavErrorSpec{}, empty,
+                                kFrames,                dir_->path() / (empty ? "empty" : "riser")};
+      SilentProgress progress;
+      runSimulation(request, progress);
+    }
+  }
+  static void TearDownTestSuite() { delete dir_; }
+  static Mission mission(const char* name) { return readMission(dir_->path() / name); }
+  static std::vector<std::size_t> all() {
+    std::vector<std::size_t> v(kFrames);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = i;
+    return v;
+  }
+  static test::ScratchDir* dir_;
+};
+test::ScratchDir* MissionNoise::dir_ = nullptr;
+
+double quantile(std::vector<double> v, double q) {
+  const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[static_cast<std::size_t>(k)];
+}
+
+TEST_F(MissionNoise, MatchesTheEmptyWaterModelWithinSamplingError) {
+  SilentProgress progress;
+  const NoiseModel reference = NoiseModel::learn(mission("empty"), progress, nullptr, kSmoothing);
+  MissionNoiseStats stats;
+  const NoiseModel learned =
+      learnNoiseFromMission(mission("riser"), all(), kSmoothing, progress, &stats);
+  ASSERT_EQ(stats.frames_used, static_cast<std::size_t>(kFrames));
+  EXPECT_TRUE(stats.has_background());
+  EXPECT_EQ(learned.smoothing(), kSmoothing);
+
+  // Each model's per-pixel mean is an average of 24 frames: the two differ by a sampling
+  // error of standard deviation stddev * sqrt(1/24 + 1/24); their standard deviations by a
+  // relative error of about sqrt(1/(2*24) + 1/(2*24)).
+  const double mean_error = std::sqrt(2.0 / kFrames);
+  const double stddev_error = std::sqrt(1.0 / kFrames);
+  std::vector<double> z_mean, z_stddev;
+  for (int r = 0; r < reference.mean().rows; ++r) {
+    for (int c = 0; c < reference.mean().cols; ++c) {
+      const double s = reference.stddev().at<float>(r, c);
+      ASSERT_GT(s, 0.0);
+      z_mean.push_back(std::abs(learned.mean().at<float>(r, c) - reference.mean().at<float>(r, c)) /
+                       (s * mean_error));
+      z_stddev.push_back(std::abs(learned.stddev().at<float>(r, c) / s - 1.0) / stddev_error);
+    }
+  }
+  // |N(0, 1)|: median 0.674, 99.9th percentile 3.29. Margins: 25 % on the median for the
+  // clipping of the sample's tails; the tail bound allows one pixel in a thousand beyond 5
+  // sampling errors, far fewer than the riser's pixels (which a contaminated model would move
+  // by tens of errors).
+  EXPECT_LT(quantile(z_mean, 0.5), 0.674 * 1.25);
+  EXPECT_LT(quantile(z_mean, 0.999), 5.0);
+  EXPECT_LT(quantile(z_stddev, 0.5), 0.674 * 1.25);
+  EXPECT_LT(quantile(z_stddev, 0.999), 5.0);
+}
+
+TEST_F(MissionNoise, AutoLearnsFromTheMissionAndNeverChoosesNoneOnSpeckle) {
+  SilentProgress progress;
+  const Mission riser = mission("riser");
+  std::vector<PosedFrame> frames;
+  for (std::size_t i : all()) frames.push_back({i, Eigen::Isometry3d::Identity()});
+  DetectorParams detector;  // auto
+  const NoiseChoice choice = chooseNoiseModel(riser, frames, detector, "", progress);
+  EXPECT_EQ(choice.detector.mode, "ztest");
+  ASSERT_TRUE(choice.model);
+  EXPECT_NE(choice.reason.find("learned from 24 of the mission's own frames"), std::string::npos)
+      << choice.reason;
+}
+
+TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
+  const test::ScratchDir dir;
+  SimulationRequest request{makeDemoScene("riser"), "riser",          paperSonar(), TrajectorySpec{},
+                            {},                     NoiseSpec::none(), NavErrorSpec{}, false,
+                            10,                     dir.path() / "m"};
+  SilentProgress progress;
+  runSimulation(request, progress);
+  const Mission m = readMission(dir.path() / "m");
+  std::vector<PosedFrame> frames;
+  for (std::size_t i = 0; i < 10; ++i) frames.push_back({i, Eigen::Isometry3d::Identity()});
+  const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", progress);
+  EXPECT_EQ(choice.detector.mode, "none");
+  EXPECT_FALSE(choice.model);
+  EXPECT_NE(choice.reason.find("noise-free"), std::string::npos) << choice.reason;
+}
+
+}  // namespace
+}  // namespace sonarcarve
