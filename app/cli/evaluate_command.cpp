@@ -3,8 +3,8 @@
 
 #include "cli/commands.h"
 #include "eval/evaluator.h"
+#include "geometry/scene_io.h"
 #include "occlusion/surface_points.h"
-#include "sim/scene_io.h"
 
 namespace sonarcarve::cli {
 

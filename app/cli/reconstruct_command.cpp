@@ -13,11 +13,11 @@
 #include "common/angles.h"
 #include "common/error.h"
 #include "eval/evaluator.h"
+#include "geometry/scene_io.h"
 #include "io/atomic_file.h"
 #include "io/mission.h"
 #include "mesh/mesh_export.h"
 #include "pipeline/reconstruction.h"
-#include "sim/scene_io.h"
 
 namespace sonarcarve::cli {
 namespace {

@@ -5,8 +5,8 @@
 #include "cli/terminal_progress.h"
 #include "common/angles.h"
 #include "common/error.h"
+#include "geometry/scene_io.h"
 #include "sim/demo_scenes.h"
-#include "sim/scene_io.h"
 #include "sim/simulation_run.h"
 
 namespace sonarcarve::cli {

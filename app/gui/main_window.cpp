@@ -32,6 +32,7 @@
 #include "fan_view.h"
 #include "frame_image.h"
 #include "frame_timeline.h"
+#include "geometry/scene_io.h"
 #include "import_dialog.h"
 #include "io/atomic_file.h"
 #include "io/oculus_log.h"
@@ -40,7 +41,6 @@
 #include "occlusion/surface_points.h"
 #include "params_panel.h"
 #include "session.h"
-#include "sim/scene_io.h"
 #include "track_view.h"
 
 namespace sonarcarve::gui {

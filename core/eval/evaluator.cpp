@@ -12,7 +12,7 @@
 
 #include "common/error.h"
 #include "common/thread_pool.h"
-#include "sim/vtk_mesh.h"
+#include "geometry/internal/vtk_mesh.h"
 
 namespace sonarcarve {
 namespace {

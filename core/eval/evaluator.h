@@ -15,7 +15,7 @@
 #include <limits>
 #include <memory>
 
-#include "sim/scene.h"
+#include "geometry/scene.h"
 
 namespace sonarcarve {
 

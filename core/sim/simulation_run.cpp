@@ -4,12 +4,12 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "geometry/scene_io.h"
 #include "io/atomic_file.h"
 #include "io/mission_writer.h"
 #include "io/nav_csv.h"
 #include "io/yaml_fields.h"
 #include "sim/ray_caster.h"
-#include "sim/scene_io.h"
 #include "sim/visible_surface.h"
 
 namespace sonarcarve {

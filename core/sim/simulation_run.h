@@ -13,8 +13,8 @@
 #include <string>
 
 #include "common/progress.h"
+#include "geometry/scene.h"
 #include "sim/noise.h"
-#include "sim/scene.h"
 #include "sim/sonar_simulator.h"
 #include "sim/trajectory.h"
 #include "sonar/sonar_model.h"

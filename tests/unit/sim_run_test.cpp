@@ -2,9 +2,9 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "geometry/scene_io.h"
 #include "io/mission.h"
 #include "sim/demo_scenes.h"
-#include "sim/scene_io.h"
 #include "sim/simulation_run.h"
 #include "support/test_support.h"
 
