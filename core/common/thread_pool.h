@@ -5,6 +5,7 @@
 
 #include <condition_variable>
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -28,6 +29,8 @@ class ThreadPool {
 
   /// Calls body(begin, end) on disjoint chunks covering [0, count), in parallel, and returns
   /// when all are done. Chunks are handed out dynamically, `grain` items at a time.
+  /// If a chunk throws, no further chunks are handed out, the running ones finish, and the
+  /// first exception is rethrown here once every worker is idle; the pool stays usable.
   void parallelFor(std::size_t count, std::size_t grain,
                    const std::function<void(std::size_t, std::size_t)>& body);
 
@@ -52,6 +55,7 @@ class ThreadPool {
   std::size_t count_ = 0;
   std::size_t grain_ = 1;
   std::size_t next_ = 0;
+  std::exception_ptr error_;  // the loop's first exception
   std::size_t generation_ = 0;
   unsigned busy_ = 0;
   bool stopping_ = false;
