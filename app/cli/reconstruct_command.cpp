@@ -85,7 +85,7 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
   return p;
 }
 
-int runReconstruct(const ReconstructOptions& o) {
+int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
   const Mission mission = readMission(o.mission);
   const ReconstructionParams params = paramsFrom(o);
   const std::filesystem::path out(o.out);
@@ -135,11 +135,12 @@ int runReconstruct(const ReconstructOptions& o) {
     const std::vector<Eigen::Vector3f> visible = std::filesystem::exists(visible_file)
                                                      ? readPointsPly(visible_file)
                                                      : std::vector<Eigen::Vector3f>{};
-    report["evaluation"] = nlohmann::json::parse(evaluate(points, truth_mesh, visible).toJson());
+    report["evaluation"] =
+        nlohmann::json::parse(evaluate(points, truth_mesh, visible, pool).toJson());
     if (!result.mesh.vertices.empty()) {
       // Mesh accuracy: distance from the mesh vertices to the ground truth.
       report["mesh_evaluation"] =
-          nlohmann::json::parse(evaluate(result.mesh.vertices, truth_mesh, visible).toJson());
+          nlohmann::json::parse(evaluate(result.mesh.vertices, truth_mesh, visible, pool).toJson());
     }
   }
   writeFileAtomically(out / "report.json", report.dump(2) + "\n");
@@ -149,7 +150,7 @@ int runReconstruct(const ReconstructOptions& o) {
 
 }  // namespace
 
-void addReconstructCommand(CLI::App& app, int& exit_code) {
+void addReconstructCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto* cmd = app.add_subcommand("reconstruct", "Carve a 3D map from a mission and export it");
   auto o = std::make_shared<ReconstructOptions>();
   cmd->add_option("mission", o->mission, "Mission folder")->required();
@@ -173,7 +174,7 @@ void addReconstructCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--min-views", o->min_views,
                   "Keep surface voxels that are the first return in at least this many views");
   cmd->add_option("--region", o->region, "Region of interest: N0 E0 D0 N1 E1 D1 (m)")->expected(6);
-  cmd->callback([o, &exit_code] { exit_code = runReconstruct(*o); });
+  cmd->callback([o, &pool, &exit_code] { exit_code = runReconstruct(*o, pool); });
 }
 
 }  // namespace sonarcarve::cli

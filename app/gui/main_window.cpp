@@ -56,7 +56,7 @@ QString describe(const std::exception& e) {
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), runner_(std::make_unique<ReconstructionRunner>()) {
+    : QMainWindow(parent), runner_(std::make_unique<ReconstructionRunner>(pool_)) {
   setWindowTitle(tr("SonarCarve"));
   setAcceptDrops(true);
   resize(1280, 800);
@@ -376,7 +376,7 @@ bool MainWindow::openMission(const QString& path) {
   const auto truth_file = mission_->folder / "ground_truth.ply";
   if (std::filesystem::exists(truth_file)) {
     try {
-      truth_ = std::make_shared<const MeshDistance>(loadSceneMesh(truth_file));
+      truth_ = std::make_shared<const MeshDistance>(loadSceneMesh(truth_file), pool_);
       log(tr("ground truth loaded: points can be coloured by their error"));
     } catch (const std::exception& e) {
       log(tr("ground truth not used: %1").arg(describe(e)));

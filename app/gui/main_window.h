@@ -13,6 +13,7 @@
 #include <memory>
 #include <thread>
 
+#include "common/thread_pool.h"
 #include "denoise/detector.h"
 #include "eval/evaluator.h"
 #include "frame_image.h"
@@ -118,6 +119,7 @@ class MainWindow : public QMainWindow {
   void updateRunActions();
   Session currentSession() const;
 
+  ThreadPool pool_;  // the workbench's one pool; it outlives the jobs that use it
   std::unique_ptr<ReconstructionRunner> runner_;
   std::shared_ptr<const Mission> mission_;
   std::shared_ptr<const MeshDistance> truth_;

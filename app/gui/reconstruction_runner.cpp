@@ -137,9 +137,10 @@ class JobObserver : public ReconstructionObserver {
 
 }  // namespace
 
-ReconstructionRunner::ReconstructionRunner(QObject* parent) : QObject(parent) {
+ReconstructionRunner::ReconstructionRunner(ThreadPool& pool, QObject* parent) : QObject(parent) {
   // Carving yields the CPU to the GUI thread and the software renderer (docs/benchmarks.md).
-  ThreadPool::shared().setBackgroundPriority(true);
+  pool.setBackgroundPriority(true);
+  ThreadPool::shared().setBackgroundPriority(true);  // reconstruct() still carves on it
 }
 
 ReconstructionRunner::~ReconstructionRunner() {

@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/thread_pool.h"
 #include "eval/evaluator.h"
 #include "io/mission.h"
 #include "map_view.h"
@@ -38,7 +39,8 @@ class ReconstructionRunner : public QObject {
   /// the map still grows about four times a second.
   static constexpr std::size_t kMapUpdateFrames = 4;
 
-  explicit ReconstructionRunner(QObject* parent = nullptr);
+  /// Lowers the priority of `pool`, on which the jobs compute, while they carve.
+  explicit ReconstructionRunner(ThreadPool& pool, QObject* parent = nullptr);
   ~ReconstructionRunner() override;
 
   /// Cancels the running job, if any, and starts `request`; returns the new job's id.

@@ -23,7 +23,8 @@ class Pipeline : public ::testing::Test {
         makeDemoScene("riser"), "riser",        paperSonar(), trajectory, {},
         NoiseSpec::none(),      NavErrorSpec{}, false,        24,         dir_->path() / "riser"};
     SilentProgress progress;
-    runSimulation(request, progress);
+    ThreadPool pool;
+    runSimulation(request, progress, pool);
   }
   static void TearDownTestSuite() { delete dir_; }
   static std::filesystem::path mission() { return dir_->path() / "riser"; }
