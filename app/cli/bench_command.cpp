@@ -54,7 +54,7 @@ double timeMs(F&& f) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-int benchSimulate(const BenchOptions& o) {
+int benchSimulate(const BenchOptions& o, ThreadPool& pool) {
   const Scene scene = makeDemoScene(o.scene);
   const SonarModel sonar = paperSonar();
   TrajectorySpec spec;
@@ -63,7 +63,7 @@ int benchSimulate(const BenchOptions& o) {
   Timings build;
   std::unique_ptr<RayCaster> caster;
   build.ms.push_back(timeMs([&] { caster = std::make_unique<RayCaster>(scene); }));
-  const SonarSimulator simulator(*caster, sonar, ImagingSettings{});
+  const SonarSimulator simulator(*caster, sonar, ImagingSettings{}, pool);
   const NoiseSpec noise;
   Timings render;
   Timings with_noise;
@@ -86,7 +86,7 @@ int benchSimulate(const BenchOptions& o) {
                         {"beams", sonar.cols()},
                         {"range_bins", sonar.rows()},
                         {"rays_per_frame", simulator.raysPerFrame()},
-                        {"threads", ThreadPool::shared().size()},
+                        {"threads", pool.size()},
                         {"frames", render.ms.size()},
                         {"bvh_build_ms", build.median()},
                         {"render_median_ms", render.median()},
@@ -96,8 +96,8 @@ int benchSimulate(const BenchOptions& o) {
     std::printf("%s\n", j.dump(2).c_str());
   } else {
     std::printf("simulate %s: %d x %d image, %zu rays per frame, %u threads, %zu frames\n",
-                o.scene.c_str(), sonar.cols(), sonar.rows(), simulator.raysPerFrame(),
-                ThreadPool::shared().size(), render.ms.size());
+                o.scene.c_str(), sonar.cols(), sonar.rows(), simulator.raysPerFrame(), pool.size(),
+                render.ms.size());
     std::printf("  BVH build            %8.1f ms\n", build.median());
     std::printf("  render (median)      %8.1f ms   mean %.1f ms\n", render.median(), render.mean());
     std::printf("  render + noise       %8.1f ms   -> %.1f frames per second\n",
@@ -120,14 +120,14 @@ double peakMemoryMb() {
 
 // The whole demo mission in memory (no file I/O in the timings): the fast engine's map
 // update and occlusion resolution per frame, then the reference engine on a few frames.
-int benchCarve(const BenchOptions& o) {
+int benchCarve(const BenchOptions& o, ThreadPool& pool) {
   const Scene scene = makeDemoScene(o.scene);
   const SonarModel sonar = paperSonar();
   TrajectorySpec spec;
   spec.kind = usualTrajectory(o.scene);
   const Trajectory trajectory = makeTrajectory(spec, scene.target);
   const RayCaster caster(scene);
-  const SonarSimulator simulator(caster, sonar, ImagingSettings{});
+  const SonarSimulator simulator(caster, sonar, ImagingSettings{}, pool);
   CarveParams params;
   if (o.region) {
     // A 4 m x 4 m column around the structure's axis, as an analyst would draw it.
@@ -151,7 +151,7 @@ int benchCarve(const BenchOptions& o) {
   }
   const double before_map = peakMemoryMb();
   VoxelMap map(params.voxel_size_m, bounds);
-  FastCarver carver(map, sonar, params);
+  FastCarver carver(map, sonar, params, pool);
   Timings carve;
   TerminalProgress progress;
   double visited = 0.0, observed = 0.0;
@@ -163,11 +163,11 @@ int benchCarve(const BenchOptions& o) {
     observed += static_cast<double>(stats.voxels_observed) / static_cast<double>(frames);
     progress.report("bench carve", i + 1, frames);
   }
-  const VoxelValues shell = collectVoxels(
-      [&](const Carver::VoxelVisitor& visit) { map.forEachOccupiedOnShell(visit); });
+  const VoxelValues shell =
+      collectVoxels([&](const Carver::VoxelVisitor& visit) { map.forEachOccupiedOnShell(visit); });
   OcclusionResolver resolver(shell.voxels, shell.values, sonar, params);
   const double occlusion_total = timeMs([&] {
-    ThreadPool::shared().parallelFor(frames, 1, [&](std::size_t b, std::size_t e) {
+    pool.parallelFor(frames, 1, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i)
         resolver.addView(poses[i]);
     });
@@ -189,7 +189,7 @@ int benchCarve(const BenchOptions& o) {
       {"scene", o.scene},
       {"region_of_interest", o.region},
       {"frames", carve.ms.size()},
-      {"threads", ThreadPool::shared().size()},
+      {"threads", pool.size()},
       {"map_blocks", map.blockCount()},
       {"fast_carve_median_ms", carve.median()},
       {"fast_carve_mean_ms", carve.mean()},
@@ -207,7 +207,7 @@ int benchCarve(const BenchOptions& o) {
   } else {
     std::printf("carve %s%s: %zu frames, 650 x 500 images, 2 cm voxels, %u threads\n",
                 o.scene.c_str(), o.region ? " (4 m region of interest)" : " (whole frustum)",
-                carve.ms.size(), ThreadPool::shared().size());
+                carve.ms.size(), pool.size());
     std::printf("  fast map update      median %7.1f ms   mean %.1f ms\n", carve.median(),
                 carve.mean());
     std::printf("  blocks visited       %7.0f per frame, %.1f M voxels observed\n", visited,
@@ -224,7 +224,7 @@ int benchCarve(const BenchOptions& o) {
 
 }  // namespace
 
-void addBenchCommand(CLI::App& app, int& exit_code) {
+void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto* cmd = app.add_subcommand("bench", "Measure the engine's speed at the paper's parameters");
   auto o = std::make_shared<BenchOptions>();
   cmd->add_option("what", o->what, "simulate | carve")
@@ -237,8 +237,9 @@ void addBenchCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--scene", o->scene, "Demo scene")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Frames to time")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the figures as JSON");
-  cmd->callback(
-      [o, &exit_code] { exit_code = o->what == "carve" ? benchCarve(*o) : benchSimulate(*o); });
+  cmd->callback([o, &pool, &exit_code] {
+    exit_code = o->what == "carve" ? benchCarve(*o, pool) : benchSimulate(*o, pool);
+  });
 }
 
 }  // namespace sonarcarve::cli

@@ -3,12 +3,12 @@
 
 #include "cli/commands.h"
 #include "eval/evaluator.h"
+#include "geometry/scene_io.h"
 #include "occlusion/surface_points.h"
-#include "sim/scene_io.h"
 
 namespace sonarcarve::cli {
 
-void addEvaluateCommand(CLI::App& app, int& exit_code) {
+void addEvaluateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto* cmd = app.add_subcommand("evaluate", "Compare a reconstruction with a ground-truth mesh");
   struct Options {
     std::string reference, reconstruction, visible, errors;
@@ -24,12 +24,13 @@ void addEvaluateCommand(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--errors", o->errors, "Write the points with their error (PLY, 'error_m')");
   cmd->add_flag("--json", o->json, "Print JSON");
-  cmd->callback([o, &exit_code] {
+  cmd->callback([o, &pool, &exit_code] {
     const std::vector<Eigen::Vector3f> points =
         positionsOf(readSurfacePointsPly(o->reconstruction));
-    const EvaluationResult r = evaluate(
-        points, loadSceneMesh(o->reference),
-        o->visible.empty() ? std::vector<Eigen::Vector3f>{} : readPointsPly(o->visible), o->tau);
+    const EvaluationResult r =
+        evaluate(points, loadSceneMesh(o->reference),
+                 o->visible.empty() ? std::vector<Eigen::Vector3f>{} : readPointsPly(o->visible),
+                 pool, o->tau);
     if (!o->errors.empty()) {
       writePointsPly(points, o->errors, r.point_errors_m, "error_m");
     }

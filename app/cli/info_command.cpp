@@ -9,8 +9,8 @@
 #include "cli/commands.h"
 #include "cli/source_flags.h"
 #include "common/angles.h"
-#include "io/import.h"
 #include "io/frame_source.h"
+#include "io/import.h"
 #include "io/mission.h"
 #include "io/mission_summary.h"
 #include "io/oculus_log.h"
@@ -160,8 +160,8 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
       j["warnings"] = mission.warnings;
       std::cout << j.dump(2) << "\n";
     } else {
-      std::printf("Mission      %s (%s, %s)\n", summary.name.c_str(), mission.folder.string().c_str(),
-                  mission.source->kind().c_str());
+      std::printf("Mission      %s (%s, %s)\n", summary.name.c_str(),
+                  mission.folder.string().c_str(), mission.source->kind().c_str());
       printText(mission.sonar, summary);
       for (const std::string& warning : mission.warnings) {
         std::printf("Note         %s\n", warning.c_str());

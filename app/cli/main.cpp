@@ -11,15 +11,16 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("sonarcarve-cli ") + SONARCARVE_VERSION);
   app.require_subcommand(1);
   int exit_code = 0;
+  sonarcarve::ThreadPool pool;  // sized to the machine; the verbs that compute in parallel share it
   sonarcarve::cli::addInfoCommand(app, exit_code);
   sonarcarve::cli::addFrameCommand(app, exit_code);
-  sonarcarve::cli::addSimulateCommand(app, exit_code);
-  sonarcarve::cli::addReconstructCommand(app, exit_code);
-  sonarcarve::cli::addEvaluateCommand(app, exit_code);
+  sonarcarve::cli::addSimulateCommand(app, pool, exit_code);
+  sonarcarve::cli::addReconstructCommand(app, pool, exit_code);
+  sonarcarve::cli::addEvaluateCommand(app, pool, exit_code);
   sonarcarve::cli::addExportCommand(app, exit_code);
   sonarcarve::cli::addNoiseModelCommand(app, exit_code);
   sonarcarve::cli::addImportCommand(app, exit_code);
-  sonarcarve::cli::addBenchCommand(app, exit_code);
+  sonarcarve::cli::addBenchCommand(app, pool, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -86,7 +86,7 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
   return p;
 }
 
-int runReconstruct(const ReconstructOptions& o) {
+int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
   const Mission mission = openMission(o.mission, openOptionsFrom(o.source));
   for (const std::string& warning : mission.warnings) {
     std::cerr << "warning: " << warning << "\n";
@@ -96,8 +96,7 @@ int runReconstruct(const ReconstructOptions& o) {
   std::filesystem::create_directories(out);
 
   TerminalProgress progress;
-  const ReconstructionResult result =
-      Pipeline(mission, params, ThreadPool::shared()).run(progress);
+  const ReconstructionResult result = Pipeline(mission, params, pool).run(progress);
   progress.finish();
   std::cerr << "denoising: " << result.detector << ", " << result.denoising << "\n";
   for (const FrameProblem& p : result.skipped) {
@@ -115,7 +114,7 @@ int runReconstruct(const ReconstructOptions& o) {
     exportMesh(result.mesh, out / "mesh.stl", stl);
   }
   writeFileAtomically(out / "params.yaml", params.toYaml());
-  const std::string report = reconstructionReport(mission, params, result);
+  const std::string report = reconstructionReport(mission, params, result, pool);
   writeFileAtomically(out / "report.json", report);
   std::cout << report;
   return result.cancelled ? 130 : 0;
@@ -123,7 +122,7 @@ int runReconstruct(const ReconstructOptions& o) {
 
 }  // namespace
 
-void addReconstructCommand(CLI::App& app, int& exit_code) {
+void addReconstructCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto* cmd = app.add_subcommand("reconstruct", "Carve a 3D map from a mission and export it");
   auto o = std::make_shared<ReconstructOptions>();
   cmd->add_option("mission", o->mission,
@@ -141,7 +140,8 @@ void addReconstructCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--noise-model", o->noise_model,
                   "Noise model (sonarcarve-cli noise-model --smoothing 3)");
   cmd->add_option("--detector", o->detector,
-                  "auto (ztest with a noise model, else none) | none | ztest | cfar | probability");
+                  "auto (ztest with the noise model given, else one learned from the mission's own "
+                  "frames) | none | ztest | cfar | probability");
   cmd->add_option("--z", o->z, "Z-test threshold in standard deviations (default 2)");
   cmd->add_option("--cfar-pfa", o->cfar_pfa, "CFAR false-alarm probability (default 0.05)");
   cmd->add_option("--smoothing", o->smoothing,
@@ -150,7 +150,7 @@ void addReconstructCommand(CLI::App& app, int& exit_code) {
                   "Keep surface voxels that are the first return in at least this many views");
   cmd->add_option("--region", o->region, "Region of interest: N0 E0 D0 N1 E1 D1 (m)")->expected(6);
   addSourceFlags(*cmd, o->source);
-  cmd->callback([o, &exit_code] { exit_code = runReconstruct(*o); });
+  cmd->callback([o, &pool, &exit_code] { exit_code = runReconstruct(*o, pool); });
 }
 
 }  // namespace sonarcarve::cli

@@ -5,8 +5,8 @@
 #include "cli/terminal_progress.h"
 #include "common/angles.h"
 #include "common/error.h"
+#include "geometry/scene_io.h"
 #include "sim/demo_scenes.h"
-#include "sim/scene_io.h"
 #include "sim/simulation_run.h"
 
 namespace sonarcarve::cli {
@@ -41,7 +41,7 @@ NoiseSpec noiseFrom(const std::string& choice, std::uint64_t seed) {
   return spec;
 }
 
-int runSimulate(const SimulateOptions& o) {
+int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   const std::filesystem::path out(o.out);
   if (std::filesystem::exists(out / "mission.yaml") && !o.force) {
     throw Error(out.string(), "", "already holds a mission; choose another --out or add --force");
@@ -66,7 +66,7 @@ int runSimulate(const SimulateOptions& o) {
       out};
 
   TerminalProgress progress;
-  const SimulationResult result = runSimulation(request, progress);
+  const SimulationResult result = runSimulation(request, progress, pool);
   progress.finish();
   std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
             << result.frames_written << " frames of '" << request.scene.name << "' ("
@@ -77,7 +77,7 @@ int runSimulate(const SimulateOptions& o) {
 
 }  // namespace
 
-void addSimulateCommand(CLI::App& app, int& exit_code) {
+void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto* cmd = app.add_subcommand("simulate", "Simulate a sonar mission with ground truth");
   auto o = std::make_shared<SimulateOptions>();
   cmd->add_option(
@@ -111,7 +111,7 @@ void addSimulateCommand(CLI::App& app, int& exit_code) {
   cmd->add_flag("--empty-water", o->empty_water,
                 "Frames of empty water (noise only), to learn a noise model from");
   cmd->add_flag("--force", o->force, "Overwrite a mission already in --out");
-  cmd->callback([o, &exit_code] { exit_code = runSimulate(*o); });
+  cmd->callback([o, &pool, &exit_code] { exit_code = runSimulate(*o, pool); });
 }
 
 }  // namespace sonarcarve::cli

@@ -22,7 +22,6 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QStyle>
-#include <QThreadPool>
 #include <QTime>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -32,6 +31,7 @@
 #include "fan_view.h"
 #include "frame_image.h"
 #include "frame_timeline.h"
+#include "geometry/scene_io.h"
 #include "import_dialog.h"
 #include "io/atomic_file.h"
 #include "io/frame_source.h"
@@ -41,7 +41,6 @@
 #include "occlusion/surface_points.h"
 #include "params_panel.h"
 #include "session.h"
-#include "sim/scene_io.h"
 #include "track_view.h"
 
 namespace sonarcarve::gui {
@@ -57,7 +56,7 @@ QString describe(const std::exception& e) {
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), runner_(std::make_unique<ReconstructionRunner>()) {
+    : QMainWindow(parent), runner_(std::make_unique<ReconstructionRunner>(pool_)) {
   setWindowTitle(tr("SonarCarve"));
   setAcceptDrops(true);
   resize(1280, 800);
@@ -112,12 +111,7 @@ MainWindow::MainWindow(QWidget* parent)
   updateRunActions();
 }
 
-MainWindow::~MainWindow() {
-  if (import_thread_.joinable()) {
-    *import_cancel_ = true;
-    import_thread_.join();
-  }
-}
+MainWindow::~MainWindow() = default;
 
 void MainWindow::buildDocks() {
   params_panel_ = new widgets::ParamsPanel;
@@ -402,7 +396,7 @@ bool MainWindow::openMission(const QString& path) {
   const auto truth_file = mission_->folder / "ground_truth.ply";
   if (std::filesystem::exists(truth_file)) {
     try {
-      truth_ = std::make_shared<const MeshDistance>(loadSceneMesh(truth_file));
+      truth_ = std::make_shared<const MeshDistance>(loadSceneMesh(truth_file), pool_);
       log(tr("ground truth loaded: points can be coloured by their error"));
     } catch (const std::exception& e) {
       log(tr("ground truth not used: %1").arg(describe(e)));
@@ -451,36 +445,22 @@ void MainWindow::updateDetector() {
   }
   const ReconstructionParams p = params_panel_->params();
   if (p.noise_model != noise_model_path_) {
-    // A noise model is megabytes of YAML: a pool thread reads it, then the frame is redrawn.
+    // A noise model is megabytes of YAML: a worker reads it, then the frame is redrawn.
     noise_model_.reset();
     noise_model_path_ = p.noise_model;
+    noise_model_job_.discard();  // a model still loading for the previous path
     if (!p.noise_model.empty()) {
-      const std::uint64_t request = ++noise_model_request_;
-      QThreadPool::globalInstance()->start(
-          [path = p.noise_model, request, window = QPointer(this)] {
-            std::shared_ptr<const NoiseModel> model;
-            QString error;
-            try {
-              model = std::make_shared<const NoiseModel>(NoiseModel::load(path));
-            } catch (const std::exception& e) {
-              error = describe(e);
-            }
-            QMetaObject::invokeMethod(
-                qApp,
-                [window, model, error, request] {
-                  MainWindow* w = window.data();
-                  if (w == nullptr || w->noise_model_request_ != request) {
-                    return;
-                  }
-                  if (!error.isEmpty()) {
-                    w->log(tr("denoised view unavailable: %1").arg(error));
-                    return;
-                  }
-                  w->noise_model_ = model;
-                  w->updateDetector();
-                  w->showFrame(w->timeline_->currentFrame());
-                },
-                Qt::QueuedConnection);
+      noise_model_job_.start(
+          [path = p.noise_model](JobContext&) {
+            return std::make_shared<const NoiseModel>(NoiseModel::load(path));
+          },
+          [this](std::shared_ptr<const NoiseModel> model) {
+            noise_model_ = std::move(model);
+            updateDetector();
+            showFrame(timeline_->currentFrame());
+          },
+          [this](const JobError& error) {
+            log(tr("denoised view unavailable: %1").arg(error.message));
           });
       return;
     }
@@ -499,43 +479,30 @@ void MainWindow::showFrame(int index) {
   if (!mission_ || index < 0 || static_cast<std::size_t>(index) >= mission_->frames.size()) {
     return;
   }
-  // Reading and denoising a frame takes tens of milliseconds: a pool thread does it and the
-  // GUI thread only draws the result, unless the user has asked for another frame since.
-  const std::uint64_t request = ++frame_request_;
-  QThreadPool::globalInstance()->start(
-      [mission = mission_, detector = detector_, index, request, window = QPointer(this)] {
-        auto shown = std::make_shared<ShownFrame>();
-        shown->index = index;
-        try {
-          Frame frame = loadFrame(*mission, static_cast<std::size_t>(index));
-          shown->raw = frame.image;
-          shown->range = widgets::displayRange(frame.image);
-          if (detector) {
-            shown->denoised = detector->apply(frame.image);
-            shown->probability = detector->params().mode == "probability";
-          }
-        } catch (const std::exception& e) {
-          shown->error = describe(e);
+  // Reading and denoising a frame takes tens of milliseconds: a worker does it and the GUI
+  // thread only draws the result, unless the user has asked for another frame since.
+  frame_job_.start(
+      [mission = mission_, detector = detector_, index](JobContext&) {
+        ShownFrame shown;
+        shown.index = index;
+        Frame frame = loadFrame(*mission, static_cast<std::size_t>(index));
+        shown.raw = frame.image;
+        shown.range = widgets::displayRange(frame.image);
+        if (detector) {
+          shown.denoised = detector->apply(frame.image);
+          shown.probability = detector->params().mode == "probability";
         }
-        QMetaObject::invokeMethod(
-            qApp,
-            [window, shown, request] {
-              MainWindow* w = window.data();
-              if (w != nullptr && w->frame_request_ == request) {
-                w->drawFrame(*shown);
-              }
-            },
-            Qt::QueuedConnection);
+        return shown;
+      },
+      [this](const ShownFrame& shown) { drawFrame(shown); },
+      [this, index](const JobError& error) {
+        raw_view_->clearFrame();
+        denoised_view_->clearFrame();
+        log(tr("frame %1: %2").arg(index).arg(error.message));
       });
 }
 
 void MainWindow::drawFrame(const ShownFrame& shown) {
-  if (!shown.error.isEmpty()) {
-    raw_view_->clearFrame();
-    denoised_view_->clearFrame();
-    log(tr("frame %1: %2").arg(shown.index).arg(shown.error));
-    return;
-  }
   raw_view_->setFrame(shown.raw, shown.range.low, shown.range.high);
   if (!shown.denoised.empty()) {
     denoised_view_->setFrame(shown.denoised, shown.probability ? 0.0f : shown.range.low,
@@ -771,91 +738,56 @@ void MainWindow::importWithDialog(const QString& log) {
 }
 
 void MainWindow::importLog(const ImportRequest& request) {
-  if (import_thread_.joinable()) {
-    *import_cancel_ = true;
-    import_thread_.join();
+  if (import_dialog_) {
+    import_dialog_->close();  // the import it showed is superseded below
   }
   auto* dialog = new QProgressDialog(
       tr("Importing %1…").arg(QString::fromStdString(request.log.filename().string())),
       tr("Cancel"), 0, 100, this);
   dialog->setAttribute(Qt::WA_DeleteOnClose);
   dialog->setMinimumDuration(500);
-  auto cancel = std::make_shared<std::atomic<bool>>(false);
-  import_cancel_ = cancel;
-  connect(dialog, &QProgressDialog::canceled, this, [cancel] { *cancel = true; });
-  const QPointer<QProgressDialog> progress_dialog(dialog);
-  const QPointer<MainWindow> window(this);
-  // Queued onto the GUI thread; dropped if the window is gone by then.
-  const auto post = [window](std::function<void(MainWindow&)> deliver) {
-    QMetaObject::invokeMethod(
-        qApp,
-        [window, deliver = std::move(deliver)] {
-          if (MainWindow* w = window.data()) {
-            deliver(*w);
-          }
-        },
-        Qt::QueuedConnection);
-  };
-  class ImportProgress : public Progress {
-   public:
-    ImportProgress(std::shared_ptr<std::atomic<bool>> cancel, QPointer<QProgressDialog> dialog)
-        : cancel_(std::move(cancel)), dialog_(std::move(dialog)) {}
-    void report(const std::string&, std::size_t done, std::size_t total) override {
-      const int percent = total > 0 ? static_cast<int>(100 * done / total) : 0;
-      QMetaObject::invokeMethod(
-          qApp,
-          [dialog = dialog_, percent] {
-            if (QProgressDialog* d = dialog.data()) {
-              d->setValue(percent);
-            }
-          },
-          Qt::QueuedConnection);
-    }
-    bool cancelled() const override { return cancel_->load(); }
-
-   private:
-    std::shared_ptr<std::atomic<bool>> cancel_;
-    QPointer<QProgressDialog> dialog_;
-  };
+  import_dialog_ = dialog;
   log(tr("importing %1 into %2")
           .arg(QString::fromStdString(request.log.string()),
                QString::fromStdString(request.out.string())));
-  import_thread_ = std::thread([request, cancel, progress_dialog, post] {
-    ImportProgress progress(cancel, progress_dialog);
-    std::function<void(MainWindow&)> deliver;
-    try {
-      const ImportReport report = importOculusToMission(request, progress);
-      deliver = [report, progress_dialog](MainWindow& w) {
-        if (QProgressDialog* d = progress_dialog.data()) {
-          d->close();
+  const int job = import_job_.start(
+      [request](JobContext& progress) { return importOculusToMission(request, progress); },
+      [this, dialog = import_dialog_](const ImportReport& report) {
+        if (dialog) {
+          dialog->close();
         }
-        w.log(tr("imported %1 frames of %2 pings (%3)")
-                  .arg(report.frames_written)
-                  .arg(report.pings_in_log)
-                  .arg(QString::fromStdString(report.container)));
+        log(tr("imported %1 frames of %2 pings (%3)")
+                .arg(report.frames_written)
+                .arg(report.pings_in_log)
+                .arg(QString::fromStdString(report.container)));
         for (const auto& lines : {report.warnings, report.problems, report.notes}) {
           for (const std::string& line : lines) {
-            w.log(QString::fromStdString(line));
+            log(QString::fromStdString(line));
           }
         }
-        const bool ok = w.openMission(QString::fromStdString(report.mission.string()));
-        emit w.importFinished(ok);
-      };
-    } catch (const Cancelled&) {
-      deliver = [](MainWindow& w) {
-        w.log(tr("import cancelled: the folder has no mission.yaml and is not a mission"));
-        emit w.importFinished(false);
-      };
-    } catch (const std::exception& e) {
-      deliver = [message = describe(e), progress_dialog](MainWindow& w) {
-        if (QProgressDialog* d = progress_dialog.data()) {
-          d->close();
+        const bool ok = openMission(QString::fromStdString(report.mission.string()));
+        emit importFinished(ok);
+      },
+      [this, dialog = import_dialog_](const JobError& error) {
+        if (error.cancelled) {
+          log(tr("import cancelled: the folder has no mission.yaml and is not a mission"));
+        } else {
+          if (dialog) {
+            dialog->close();
+          }
+          showError(tr("Cannot import the log"), error.message);
         }
-        w.showError(tr("Cannot import the log"), message);
-        emit w.importFinished(false);
-      };
+        emit importFinished(false);
+      },
+      [dialog = import_dialog_](const QString&, std::size_t done, std::size_t total) {
+        if (dialog) {
+          dialog->setValue(total > 0 ? static_cast<int>(100 * done / total) : 0);
+        }
+      });
+  connect(dialog, &QProgressDialog::canceled, this, [this, job] {
+    if (import_job_.currentJob() == job) {
+      import_job_.cancel();
     }
-    post(std::move(deliver));
   });
 }
 

@@ -6,13 +6,14 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QTimer>
-#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <memory>
-#include <thread>
 
+#include "background_job.h"
+#include "common/thread_pool.h"
 #include "denoise/detector.h"
 #include "eval/evaluator.h"
 #include "frame_image.h"
@@ -28,6 +29,7 @@ class QLabel;
 class QMenu;
 class QPlainTextEdit;
 class QProgressBar;
+class QProgressDialog;
 
 namespace sonarcarve::widgets {
 class FanView;
@@ -54,7 +56,8 @@ class MainWindow : public QMainWindow {
   bool openMission(const QString& path);
   bool openSession(const QString& file);
   /// Imports a vendor log into a mission folder on a worker thread (with a cancellable
-  /// progress dialog), then opens it; emits importFinished(ok).
+  /// progress dialog), then opens it; emits importFinished(ok). A new import supersedes a
+  /// running one.
   void importLog(const ImportRequest& request);
   /// Asks for the import's choices (navigation, mounting, time offset), then imports.
   void importWithDialog(const QString& log);
@@ -105,7 +108,6 @@ class MainWindow : public QMainWindow {
     cv::Mat denoised;
     DisplayWindow range;
     bool probability = false;
-    QString error;
   };
   void showFrame(int index);
   void drawFrame(const ShownFrame& shown);
@@ -118,6 +120,7 @@ class MainWindow : public QMainWindow {
   void updateRunActions();
   Session currentSession() const;
 
+  ThreadPool pool_;  // the workbench's one pool; it outlives the jobs that use it
   std::unique_ptr<ReconstructionRunner> runner_;
   std::shared_ptr<const Mission> mission_;
   std::shared_ptr<const MeshDistance> truth_;
@@ -145,11 +148,13 @@ class MainWindow : public QMainWindow {
   QAction* follow_action_ = nullptr;
   QTimer follow_timer_;
   long latest_carved_frame_ = -1;
-  std::uint64_t frame_request_ = 0;
-  std::uint64_t noise_model_request_ = 0;
-  std::thread import_thread_;
-  std::shared_ptr<std::atomic<bool>> import_cancel_;
   std::chrono::steady_clock::time_point run_started_;
+  // Off the GUI thread: reading a noise model, reading and denoising the frame shown, and
+  // importing a vendor log (with its progress dialog).
+  BackgroundJob noise_model_job_;
+  BackgroundJob frame_job_;
+  BackgroundJob import_job_;
+  QPointer<QProgressDialog> import_dialog_;
 };
 
 }  // namespace sonarcarve::gui

@@ -1,20 +1,20 @@
-// ReconstructionRunner: runs reconstruct() on a worker thread for the GUI, one job at a time.
-// Each start() gets a job id; starting a job cancels the running one, whose late results are
-// dropped (superseded). Results reach the GUI thread as values through queued calls: map
-// blocks that changed (with their error against the ground truth, computed on the worker),
-// progress (at most every `kProgressInterval_ms`), skipped frames, the final result or an
-// error. Pause holds the worker at its next cancellation check. The GUI thread never waits on
-// a worker, except in the destructor, which cancels every job and joins its thread.
+// ReconstructionRunner: runs reconstruct() on a worker thread for the GUI, one job at a time
+// (a BackgroundJob). Each start() gets a job id; starting a job cancels the running one, whose
+// late results are dropped (superseded). Results reach the GUI thread as values through
+// queued calls: map blocks that changed (with their error against the ground truth, computed
+// on the worker), progress (at most every BackgroundJob::kProgressInterval_ms), skipped
+// frames, the final result or an error. Pause holds the worker at its next cancellation
+// check. The GUI thread never waits on a worker, except in the destructor, which cancels
+// every job and joins its thread.
 #pragma once
 
 #include <QObject>
 #include <QString>
-#include <atomic>
-#include <list>
 #include <memory>
-#include <thread>
 #include <vector>
 
+#include "background_job.h"
+#include "common/thread_pool.h"
 #include "eval/evaluator.h"
 #include "io/mission.h"
 #include "map_view.h"
@@ -32,22 +32,22 @@ struct RunRequest {
 class ReconstructionRunner : public QObject {
   Q_OBJECT
  public:
-  static constexpr int kProgressInterval_ms = 100;
   /// Map updates every this many frames: each update carries every block the frames changed
   /// (most of the frustum), so one per frame cost the demo five times its carving time; at 4
   /// the map still grows about four times a second.
   static constexpr std::size_t kMapUpdateFrames = 4;
 
-  explicit ReconstructionRunner(QObject* parent = nullptr);
-  ~ReconstructionRunner() override;
+  /// Lowers the priority of `pool`, on which the jobs compute, while they carve.
+  explicit ReconstructionRunner(ThreadPool& pool, QObject* parent = nullptr);
 
   /// Cancels the running job, if any, and starts `request`; returns the new job's id.
   int start(RunRequest request);
-  void cancel();
-  void setPaused(bool paused);
-  bool paused() const;
-  bool running() const { return running_job_ != 0; }
-  int currentJob() const { return current_job_; }
+  /// Stops the running job; nothing more of it arrives.
+  void cancel() { job_.discard(); }
+  void setPaused(bool paused) { job_.setPaused(paused); }
+  bool paused() const { return job_.paused(); }
+  bool running() const { return job_.running(); }
+  int currentJob() const { return job_.currentJob(); }
 
  signals:
   void started(int job);
@@ -61,15 +61,8 @@ class ReconstructionRunner : public QObject {
   void failed(int job, const QString& message);
 
  private:
-  struct Job;
-  void post(int job, std::function<void()> deliver);
-  void reapFinishedThreads();
-
-  int next_id_ = 1;
-  int current_job_ = 0;
-  int running_job_ = 0;
-  std::shared_ptr<Job> job_;
-  std::list<std::pair<std::shared_ptr<Job>, std::thread>> threads_;
+  ThreadPool& pool_;
+  BackgroundJob job_;
 };
 
 }  // namespace sonarcarve::gui

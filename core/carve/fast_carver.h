@@ -27,8 +27,7 @@ struct IntegrateStats {
 
 class FastCarver {
  public:
-  FastCarver(VoxelMap& map, const SonarModel& sonar, const CarveParams& params,
-             ThreadPool& pool = ThreadPool::shared());
+  FastCarver(VoxelMap& map, const SonarModel& sonar, const CarveParams& params, ThreadPool& pool);
 
   /// Carves one frame (CV_32F polar image) seen from `T_world_sonar`. Changed blocks get
   /// `stamp` (use the frame number + 1).

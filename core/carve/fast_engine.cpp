@@ -13,8 +13,8 @@ class FastEngine final : public Carver {
       : map_(setup.params.voxel_size_m, *setup.params.region),
         carver_(map_, setup.sonar, setup.params, setup.pool) {}
 
-  void integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar,
-                 std::uint32_t stamp, const VisibilityLimit& visibility) override {
+  void integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar, std::uint32_t stamp,
+                 const VisibilityLimit& visibility) override {
     carver_.integrate(image, T_world_sonar, stamp, visibility);
   }
   bool supportsVisibilityLimit() const override { return true; }
@@ -31,8 +31,7 @@ class FastEngine final : public Carver {
 };
 
 [[maybe_unused]] const bool registered = registerCarverEngine(
-    CarverEngine::Fast, "fast",
-    [](const CarverSetup& setup) -> std::unique_ptr<Carver> {
+    CarverEngine::Fast, "fast", [](const CarverSetup& setup) -> std::unique_ptr<Carver> {
       return std::make_unique<FastEngine>(setup);
     });
 

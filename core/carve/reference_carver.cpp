@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "carve/min_intensity_octree.h"
+#include "carve/internal/min_intensity_octree.h"
 #include "common/error.h"
 
 namespace sonarcarve {

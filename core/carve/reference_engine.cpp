@@ -48,8 +48,7 @@ class ReferenceEngine final : public Carver {
 };
 
 [[maybe_unused]] const bool registered = registerCarverEngine(
-    CarverEngine::Reference, "reference",
-    [](const CarverSetup& setup) -> std::unique_ptr<Carver> {
+    CarverEngine::Reference, "reference", [](const CarverSetup& setup) -> std::unique_ptr<Carver> {
       return std::make_unique<ReferenceEngine>(setup);
     });
 

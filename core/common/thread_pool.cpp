@@ -1,6 +1,7 @@
 #include "common/thread_pool.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -49,11 +50,6 @@ ThreadPool::~ThreadPool() {
   }
 }
 
-ThreadPool& ThreadPool::shared() {
-  static ThreadPool pool;
-  return pool;
-}
-
 void ThreadPool::runChunks() {
   while (true) {
     std::size_t begin = 0;
@@ -67,7 +63,16 @@ void ThreadPool::runChunks() {
       end = std::min(count_, begin + grain_);
       next_ = end;
     }
-    (*body_)(begin, end);
+    try {
+      (*body_)(begin, end);
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      if (!error_) {
+        error_ = std::current_exception();
+      }
+      next_ = count_;  // hand out no further chunks
+      return;
+    }
   }
 }
 
@@ -113,13 +118,21 @@ void ThreadPool::parallelFor(std::size_t count, std::size_t grain,
     count_ = count;
     grain_ = std::max<std::size_t>(1, grain);
     next_ = 0;
+    error_ = nullptr;
     ++generation_;
   }
   wake_.notify_all();
   runChunks();
-  std::unique_lock lock(mutex_);
-  done_.wait(lock, [&] { return busy_ == 0 && next_ >= count_; });
-  body_ = nullptr;
+  std::exception_ptr error;
+  {
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [&] { return busy_ == 0 && next_ >= count_; });
+    body_ = nullptr;
+    error = std::exchange(error_, nullptr);
+  }
+  if (error) {
+    std::rethrow_exception(error);
+  }
 }
 
 }  // namespace sonarcarve

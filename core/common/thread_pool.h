@@ -5,6 +5,7 @@
 
 #include <condition_variable>
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -28,11 +29,10 @@ class ThreadPool {
 
   /// Calls body(begin, end) on disjoint chunks covering [0, count), in parallel, and returns
   /// when all are done. Chunks are handed out dynamically, `grain` items at a time.
+  /// If a chunk throws, no further chunks are handed out, the running ones finish, and the
+  /// first exception is rethrown here once every worker is idle; the pool stays usable.
   void parallelFor(std::size_t count, std::size_t grain,
                    const std::function<void(std::size_t, std::size_t)>& body);
-
-  /// A pool shared by the engine, sized to the machine.
-  static ThreadPool& shared();
 
   /// Runs the workers at a lower scheduling priority (Linux nice 10) from their next loop
   /// on, so that an interactive thread (the GUI's, and the software OpenGL renderer's) gets
@@ -52,6 +52,7 @@ class ThreadPool {
   std::size_t count_ = 0;
   std::size_t grain_ = 1;
   std::size_t next_ = 0;
+  std::exception_ptr error_;  // the loop's first exception
   std::size_t generation_ = 0;
   unsigned busy_ = 0;
   bool stopping_ = false;

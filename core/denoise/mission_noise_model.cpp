@@ -87,7 +87,8 @@ cv::Mat separableFit(const cv::Mat& field) {
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
       const double log_level = rho[static_cast<std::size_t>(r)] + beta[static_cast<std::size_t>(c)];
-      fit.at<float>(r, c) = std::isfinite(log_level) ? static_cast<float>(std::exp(log_level)) : 0.0f;
+      fit.at<float>(r, c) =
+          std::isfinite(log_level) ? static_cast<float>(std::exp(log_level)) : 0.0f;
     }
   }
   return fit;
@@ -155,9 +156,8 @@ NoiseModel learnNoiseFromMission(const Mission& mission, const std::vector<std::
     for (int r = 0; r < rows; ++r) {
       for (int c = 0; c < cols; ++c) {
         const float fitted = mean_fit.at<float>(r, c);
-        if (fitted > 0.0f &&
-            std::log(std::max(mean.at<float>(r, c), 1e-30f) / fitted) - centre >
-                kStructureSpreads * spread) {
+        if (fitted > 0.0f && std::log(std::max(mean.at<float>(r, c), 1e-30f) / fitted) - centre >
+                                 kStructureSpreads * spread) {
           mean.at<float>(r, c) = fitted;
           stddev.at<float>(r, c) = stddev_fit.at<float>(r, c);
           ++replaced;
@@ -174,8 +174,7 @@ NoiseModel learnNoiseFromMission(const Mission& mission, const std::vector<std::
     std::vector<double> levels(mean.begin<float>(), mean.end<float>());
     stats->background_median = median(levels);
   }
-  return NoiseModel(mean, stddev, sigma, mission.sonar, static_cast<int>(images.size()),
-                    smoothing);
+  return NoiseModel(mean, stddev, sigma, mission.sonar, static_cast<int>(images.size()), smoothing);
 }
 
 }  // namespace sonarcarve

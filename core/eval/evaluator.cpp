@@ -12,7 +12,7 @@
 
 #include "common/error.h"
 #include "common/thread_pool.h"
-#include "sim/vtk_mesh.h"
+#include "geometry/internal/vtk_mesh.h"
 
 namespace sonarcarve {
 namespace {
@@ -28,7 +28,7 @@ double quantile(std::vector<float> values, double q) {
 }
 
 std::vector<float> distancesToPoints(const std::vector<Eigen::Vector3f>& queries,
-                                     const std::vector<Eigen::Vector3f>& cloud) {
+                                     const std::vector<Eigen::Vector3f>& cloud, ThreadPool& pool) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToFloat();
   points->SetNumberOfPoints(static_cast<vtkIdType>(cloud.size()));
@@ -41,7 +41,7 @@ std::vector<float> distancesToPoints(const std::vector<Eigen::Vector3f>& queries
   locator->SetDataSet(poly);
   locator->BuildLocator();
   std::vector<float> d(queries.size());
-  ThreadPool::shared().parallelFor(queries.size(), 1024, [&](std::size_t b, std::size_t e) {
+  pool.parallelFor(queries.size(), 1024, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       double x[3] = {queries[i].x(), queries[i].y(), queries[i].z()};
       const vtkIdType id = locator->FindClosestPoint(x);
@@ -67,8 +67,9 @@ double fractionWithin(const std::vector<float>& v, double tau) {
   return static_cast<double>(n) / static_cast<double>(v.size());
 }
 
-std::vector<float> distancesToMesh(const std::vector<Eigen::Vector3f>& points, const Scene& mesh) {
-  return MeshDistance(mesh).distances(points);
+std::vector<float> distancesToMesh(const std::vector<Eigen::Vector3f>& points, const Scene& mesh,
+                                   ThreadPool& pool) {
+  return MeshDistance(mesh, pool).distances(points);
 }
 
 }  // namespace
@@ -78,7 +79,8 @@ struct MeshDistance::Locator {
   vtkSmartPointer<vtkStaticCellLocator> cells;
 };
 
-MeshDistance::MeshDistance(const Scene& mesh) : locator_(std::make_unique<Locator>()) {
+MeshDistance::MeshDistance(const Scene& mesh, ThreadPool& pool)
+    : locator_(std::make_unique<Locator>()), pool_(pool) {
   locator_->poly = polyDataFromScene(mesh);
   locator_->cells = vtkSmartPointer<vtkStaticCellLocator>::New();
   locator_->cells->SetDataSet(locator_->poly);
@@ -91,7 +93,7 @@ std::vector<float> MeshDistance::distances(const std::vector<Eigen::Vector3f>& p
                                            double max_distance_m) const {
   std::vector<float> d(points.size());
   const bool bounded = std::isfinite(max_distance_m);
-  ThreadPool::shared().parallelFor(points.size(), 1024, [&](std::size_t b, std::size_t e) {
+  pool_.parallelFor(points.size(), 1024, [&](std::size_t b, std::size_t e) {
     auto cell = vtkSmartPointer<vtkGenericCell>::New();
     for (std::size_t i = b; i < e; ++i) {
       double x[3] = {points[i].x(), points[i].y(), points[i].z()};
@@ -129,7 +131,8 @@ std::vector<Eigen::Vector3f> sampleSurface(const Scene& mesh, double spacing_m) 
 }
 
 EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, const Scene& mesh,
-                          std::vector<Eigen::Vector3f> reference_points, double tau_m) {
+                          std::vector<Eigen::Vector3f> reference_points, ThreadPool& pool,
+                          double tau_m) {
   if (mesh.triangles.empty()) {
     throw Error("evaluation", "reference", "the reference mesh has no triangles");
   }
@@ -143,14 +146,15 @@ EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, co
   r.tau_m = tau_m;
   r.reconstructed_points = reconstruction.size();
   r.reference_points = reference_points.size();
-  r.point_errors_m = distancesToMesh(reconstruction, mesh);
+  r.point_errors_m = distancesToMesh(reconstruction, mesh, pool);
   r.accuracy_mean_m = mean(r.point_errors_m);
   r.accuracy_median_m = quantile(r.point_errors_m, 0.5);
   r.accuracy_p90_m = quantile(r.point_errors_m, 0.9);
   r.precision = fractionWithin(r.point_errors_m, tau_m);
   r.floating_points = static_cast<std::size_t>(std::count_if(
       r.point_errors_m.begin(), r.point_errors_m.end(), [](float d) { return d > 0.10f; }));
-  const std::vector<float> to_reconstruction = distancesToPoints(reference_points, reconstruction);
+  const std::vector<float> to_reconstruction =
+      distancesToPoints(reference_points, reconstruction, pool);
   r.completeness = fractionWithin(to_reconstruction, tau_m);
   r.fscore = r.precision + r.completeness > 0.0
                  ? 2.0 * r.precision * r.completeness / (r.precision + r.completeness)

@@ -15,7 +15,8 @@
 #include <limits>
 #include <memory>
 
-#include "sim/scene.h"
+#include "common/thread_pool.h"
+#include "geometry/scene.h"
 
 namespace sonarcarve {
 
@@ -37,10 +38,11 @@ struct EvaluationResult {
 };
 
 /// Distances from points to a mesh, with the mesh's locator built once (for viewers that
-/// colour a growing map by its error). distances() is thread safe; it uses the shared pool.
+/// colour a growing map by its error). distances() is thread safe; it runs on `pool`, which
+/// must outlive this.
 class MeshDistance {
  public:
-  explicit MeshDistance(const Scene& mesh);
+  MeshDistance(const Scene& mesh, ThreadPool& pool);
   ~MeshDistance();
   MeshDistance(const MeshDistance&) = delete;
   MeshDistance& operator=(const MeshDistance&) = delete;
@@ -53,11 +55,14 @@ class MeshDistance {
  private:
   struct Locator;  // VTK stays out of core's public headers
   std::unique_ptr<Locator> locator_;
+  ThreadPool& pool_;
 };
 
-/// `reference_points` may be empty: the mesh is then sampled every 1 cm.
+/// `reference_points` may be empty: the mesh is then sampled every 1 cm. Distances are
+/// computed in parallel on `pool`.
 EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, const Scene& mesh,
-                          std::vector<Eigen::Vector3f> reference_points, double tau_m = 0.05);
+                          std::vector<Eigen::Vector3f> reference_points, ThreadPool& pool,
+                          double tau_m = 0.05);
 
 /// Points spread over the mesh surface about every `spacing_m` (deterministic).
 std::vector<Eigen::Vector3f> sampleSurface(const Scene& mesh, double spacing_m);

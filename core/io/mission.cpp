@@ -2,8 +2,8 @@
 
 #include "common/error.h"
 #include "io/csv_table.h"
-#include "io/frame_source.h"
 #include "io/frame_png.h"
+#include "io/frame_source.h"
 #include "io/nav_csv.h"
 #include "io/sonar_yaml.h"
 #include "io/yaml_fields.h"
@@ -48,9 +48,9 @@ class MissionFolderSource final : public FrameSource {
     frame.time_s = record.time_s;
     frame.sonar_id = record.sonar_id;
     if (record.sonar_id != sonar_.id()) {
-      throw Error(path.string(), "frame " + std::to_string(index),
-                  "sonar id '" + record.sonar_id + "' is not the mission's sonar '" + sonar_.id() +
-                      "'");
+      throw Error(
+          path.string(), "frame " + std::to_string(index),
+          "sonar id '" + record.sonar_id + "' is not the mission's sonar '" + sonar_.id() + "'");
     }
     frame.image = readFramePng(path);
     if (frame.image.rows != sonar_.rows() || frame.image.cols != sonar_.cols()) {
@@ -78,13 +78,13 @@ bool looksLikeMission(const std::filesystem::path& path) {
   return path.filename() == kMissionFileName && std::filesystem::is_regular_file(path, ec);
 }
 
-[[maybe_unused]] const bool registered = registerFrameSourceReader(
-    {"mission folder", looksLikeMission,
-     [](const std::filesystem::path& path, const OpenOptions& options) {
-       Mission mission = readMission(path);
-       applyOpenOptions(mission, options);
-       return mission;
-     }});
+[[maybe_unused]] const bool registered =
+    registerFrameSourceReader({"mission folder", looksLikeMission,
+                               [](const std::filesystem::path& path, const OpenOptions& options) {
+                                 Mission mission = readMission(path);
+                                 applyOpenOptions(mission, options);
+                                 return mission;
+                               }});
 
 }  // namespace
 
@@ -125,9 +125,9 @@ Mission readMission(const std::filesystem::path& folder_or_yaml) {
 
   NavTrack nav = readNavCsv(folder / nav_file);
   std::vector<FrameRecord> frames = readFrameIndex(folder / index_file);
-  Mission mission{folder,         std::move(name),   std::move(sonar), mounting,
-                  std::move(nav), std::move(frames), nav_file,         index_file,
-                  nullptr,        {}};
+  Mission mission{
+      folder,   std::move(name), std::move(sonar), mounting, std::move(nav), std::move(frames),
+      nav_file, index_file,      nullptr,          {}};
   mission.source = makeMissionFolderSource(mission);
   return mission;
 }

@@ -14,10 +14,10 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "geometry/internal/vtk_mesh.h"
 #include "io/atomic_file.h"
 #include "io/ply_check.h"
 #include "io/point_cloud_ply.h"
-#include "sim/vtk_mesh.h"
 
 namespace sonarcarve {
 namespace {

@@ -19,7 +19,7 @@
 #include <vtkWindowedSincPolyDataFilter.h>
 
 #include "common/error.h"
-#include "sim/vtk_mesh.h"
+#include "geometry/internal/vtk_mesh.h"
 
 namespace sonarcarve {
 namespace {

@@ -80,11 +80,10 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
   return result;
 }
 
-void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source,
-                        Progress& progress, MapUpdateSink* updates) const {
+void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source, Progress& progress,
+                        MapUpdateSink* updates) const {
   const VoxelValues candidates = surfaceCandidates(*result.carver);
-  const OcclusionResolver first_surface(candidates.voxels, candidates.values, sonar_,
-                                        result.carve);
+  const OcclusionResolver first_surface(candidates.voxels, candidates.values, sonar_, result.carve);
   auto refined = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
   VisibilityLimit limit;
   limit.elevation_bins = first_surface.elevationBins();
@@ -101,8 +100,8 @@ void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source,
     const std::vector<float> first = first_surface.firstReturnRanges(result.used[n].T_world_sonar);
     limit.first_return_m = &first;
     const auto t0 = Clock::now();
-    refined->integrate(frame.image, result.used[n].T_world_sonar,
-                       static_cast<std::uint32_t>(n + 1), limit);
+    refined->integrate(frame.image, result.used[n].T_world_sonar, static_cast<std::uint32_t>(n + 1),
+                       limit);
     result.carve_ms[n] += msSince(t0);
     progress.report("refine", n + 1, result.used.size());
   }

@@ -64,11 +64,16 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     throw Error(mission_.folder.string(), "", "no frame can be placed in the world");
   }
   // Denoise, then carve.
-  const CarveStage carving(sonar_, {engineOf(params_), params_.carve, params_.occlusion_aware_carving},
-                           pool_);
+  const CarveStage carving(
+      sonar_, {engineOf(params_), params_.carve, params_.occlusion_aware_carving}, pool_);
   carving.mapBounds(posed);  // a region outside every view is an error before any file is read
-  const NoiseChoice noise =
-      chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);
+  NoiseChoice noise;
+  try {
+    noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);
+  } catch (const Cancelled&) {
+    result.cancelled = true;
+    return result;
+  }
   result.detector = noise.detector.mode;
   result.denoising = noise.reason;
   const DenoisedFrames frames(mission_, sonar_, noise);
@@ -76,7 +81,8 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   if (observer) {
     updates.emplace(*observer, update_every);
   }
-  CarveStageResult carved = carving.run(posed, frames, progress, updates ? &*updates : nullptr, skip);
+  CarveStageResult carved =
+      carving.run(posed, frames, progress, updates ? &*updates : nullptr, skip);
   result.cancelled = carved.cancelled;
   result.frames_used = carved.used.size();
   if (carved.used.empty()) {
@@ -105,12 +111,6 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   result.total_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   return result;
-}
-
-ReconstructionResult reconstruct(const Mission& mission, const ReconstructionParams& params,
-                                 Progress& progress, ReconstructionObserver* observer,
-                                 std::size_t update_every) {
-  return Pipeline(mission, params, ThreadPool::shared()).run(progress, observer, update_every);
 }
 
 }  // namespace sonarcarve

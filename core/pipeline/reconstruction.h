@@ -23,9 +23,9 @@ namespace sonarcarve {
 
 struct ReconstructionResult {
   SurfacePoints surface;
-  Mesh mesh;                        ///< empty when meshing is off or there are too few points
-  std::unique_ptr<Carver> carver;   ///< the carved map, whatever the engine
-  const VoxelMap* map = nullptr;    ///< the carver's block map (fast engine), or null
+  Mesh mesh;                       ///< empty when meshing is off or there are too few points
+  std::unique_ptr<Carver> carver;  ///< the carved map, whatever the engine
+  const VoxelMap* map = nullptr;   ///< the carver's block map (fast engine), or null
   std::size_t frames_used = 0;
   std::string detector;   ///< the detector that ran (`auto` made concrete)
   std::string denoising;  ///< which noise model it used and why, in words
@@ -60,11 +60,6 @@ class Pipeline {
   SonarModel sonar_;
   ThreadPool& pool_;
 };
-
-/// Runs a Pipeline on the shared pool (for callers without one of their own).
-ReconstructionResult reconstruct(const Mission& mission, const ReconstructionParams& params,
-                                 Progress& progress, ReconstructionObserver* observer = nullptr,
-                                 std::size_t update_every = 1);
 
 /// Indices of the frames the parameters select (first, last, stride).
 std::vector<std::size_t> selectedFrames(const Mission& mission, const ReconstructionParams& params);

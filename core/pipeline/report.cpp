@@ -4,13 +4,13 @@
 #include <nlohmann/json.hpp>
 
 #include "eval/evaluator.h"
+#include "geometry/scene_io.h"
 #include "io/frame_source.h"
-#include "sim/scene_io.h"
 
 namespace sonarcarve {
 
 std::string reconstructionReport(const Mission& mission, const ReconstructionParams& params,
-                                 const ReconstructionResult& result) {
+                                 const ReconstructionResult& result, ThreadPool& pool) {
   nlohmann::json report = {{"mission", mission.folder.string()},
                            {"engine", params.engine},
                            {"detector", result.detector},
@@ -44,11 +44,12 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
     const std::vector<Eigen::Vector3f> visible = std::filesystem::exists(visible_file, ec)
                                                      ? readPointsPly(visible_file)
                                                      : std::vector<Eigen::Vector3f>{};
-    report["evaluation"] = nlohmann::json::parse(evaluate(points, truth_mesh, visible).toJson());
+    report["evaluation"] =
+        nlohmann::json::parse(evaluate(points, truth_mesh, visible, pool).toJson());
     if (!result.mesh.vertices.empty()) {
       // Mesh accuracy: distance from the mesh vertices to the ground truth.
       report["mesh_evaluation"] =
-          nlohmann::json::parse(evaluate(result.mesh.vertices, truth_mesh, visible).toJson());
+          nlohmann::json::parse(evaluate(result.mesh.vertices, truth_mesh, visible, pool).toJson());
     }
   }
   return report.dump(2) + "\n";

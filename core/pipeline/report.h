@@ -10,8 +10,8 @@
 
 namespace sonarcarve {
 
-/// The report as indented JSON text.
+/// The report as indented JSON text; the evaluation runs on `pool`.
 std::string reconstructionReport(const Mission& mission, const ReconstructionParams& params,
-                                 const ReconstructionResult& result);
+                                 const ReconstructionResult& result, ThreadPool& pool);
 
 }  // namespace sonarcarve

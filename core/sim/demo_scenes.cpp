@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "common/error.h"
-#include "sim/vtk_mesh.h"
+#include "geometry/internal/vtk_mesh.h"
 
 namespace sonarcarve {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene.h"
+#include "geometry/scene.h"
 
 namespace sonarcarve {
 

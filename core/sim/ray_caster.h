@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <memory>
 
-#include "sim/scene.h"
+#include "geometry/scene.h"
 
 namespace sonarcarve {
 

@@ -4,12 +4,12 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "geometry/scene_io.h"
 #include "io/atomic_file.h"
 #include "io/mission_writer.h"
 #include "io/nav_csv.h"
 #include "io/yaml_fields.h"
 #include "sim/ray_caster.h"
-#include "sim/scene_io.h"
 #include "sim/visible_surface.h"
 
 namespace sonarcarve {
@@ -55,14 +55,15 @@ SonarModel paperSonar(const std::string& id) {
                     degToRad(20.0));
 }
 
-SimulationResult runSimulation(const SimulationRequest& request, Progress& progress) {
+SimulationResult runSimulation(const SimulationRequest& request, Progress& progress,
+                               ThreadPool& pool) {
   const Trajectory trajectory = makeTrajectory(request.trajectory, request.scene.target);
   std::size_t frames = trajectory.poses.size();
   if (request.max_frames && *request.max_frames >= 0) {
     frames = std::min(frames, static_cast<std::size_t>(*request.max_frames));
   }
   const RayCaster caster(request.scene);
-  const SonarSimulator simulator(caster, request.sonar, request.imaging);
+  const SonarSimulator simulator(caster, request.sonar, request.imaging, pool);
   VisibleSurface visible;
   MissionWriter writer(request.output,
                        request.scene.name + (request.empty_water ? " (empty water)" : "") + " / " +

@@ -13,8 +13,9 @@
 #include <string>
 
 #include "common/progress.h"
+#include "common/thread_pool.h"
+#include "geometry/scene.h"
 #include "sim/noise.h"
-#include "sim/scene.h"
 #include "sim/sonar_simulator.h"
 #include "sim/trajectory.h"
 #include "sonar/sonar_model.h"
@@ -43,6 +44,8 @@ struct SimulationResult {
 /// The seed paper's sonar: 2 cm range bins to 10 m, 130 degrees in 650 beams, 20 degrees.
 SonarModel paperSonar(const std::string& id = "sim-sonar");
 
-SimulationResult runSimulation(const SimulationRequest& request, Progress& progress);
+/// Renders each frame in parallel on `pool`.
+SimulationResult runSimulation(const SimulationRequest& request, Progress& progress,
+                               ThreadPool& pool);
 
 }  // namespace sonarcarve

@@ -44,8 +44,9 @@ using HitSink = std::function<void(const Eigen::Vector3f& p_world)>;
 
 class SonarSimulator {
  public:
+  /// Renders each frame's beams in parallel on `pool`.
   SonarSimulator(const RayCaster& caster, const SonarModel& sonar, ImagingSettings settings,
-                 ThreadPool& pool = ThreadPool::shared());
+                 ThreadPool& pool);
 
   /// Noise-free CV_32F image seen from `T_world_sonar`. If `hits` is set it receives every
   /// surface point seen (called from several threads, one at a time under a lock).

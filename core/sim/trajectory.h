@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene.h"
+#include "geometry/scene.h"
 #include "sonar/mounting.h"
 #include "sonar/nav_track.h"
 

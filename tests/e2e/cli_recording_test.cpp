@@ -36,12 +36,12 @@ TEST(CliRecording, ReconstructsAnOculusLogInPlaceAsIfImported) {
                      << "0,0,0,5,0,-30,0\n"
                      << "100000,0,0,5,0,-30,0\n";
   const std::string common = " --min-views 1 --detector none";
-  const RunResult imported = runCli("import --format oculus " + quoted(test::oculusFixture()) +
-                                    " --nav " + quoted(nav) + " --out " +
-                                    quoted(dir.path() / "mission"));
+  const RunResult imported =
+      runCli("import --format oculus " + quoted(test::oculusFixture()) + " --nav " + quoted(nav) +
+             " --out " + quoted(dir.path() / "mission"));
   ASSERT_EQ(imported.exit_code, 0) << imported.output;
-  const RunResult via_mission = runCli("reconstruct " + quoted(dir.path() / "mission") +
-                                       " --out " + quoted(dir.path() / "a") + common);
+  const RunResult via_mission = runCli("reconstruct " + quoted(dir.path() / "mission") + " --out " +
+                                       quoted(dir.path() / "a") + common);
   ASSERT_EQ(via_mission.exit_code, 0) << via_mission.output;
   const RunResult in_place = runCli("reconstruct " + quoted(test::oculusFixture()) + " --nav " +
                                     quoted(nav) + " --out " + quoted(dir.path() / "b") + common);

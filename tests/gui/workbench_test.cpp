@@ -69,7 +69,8 @@ class WorkbenchTest : public QObject {
                                           24,
                                           mission()};
     sonarcarve::SilentProgress progress;
-    sonarcarve::runSimulation(request, progress);
+    sonarcarve::ThreadPool pool;
+    sonarcarve::runSimulation(request, progress, pool);
   }
 
   // The demo scene's mission, run to the end: the map the GUI shows and the surface it exports

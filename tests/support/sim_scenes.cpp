@@ -4,7 +4,7 @@
 #include <vtkSphereSource.h>
 #include <Eigen/Geometry>
 
-#include "sim/vtk_mesh.h"
+#include "geometry/internal/vtk_mesh.h"
 
 namespace sonarcarve::test {
 

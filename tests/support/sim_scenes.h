@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/scene.h"
+#include "geometry/scene.h"
 
 namespace sonarcarve::test {
 

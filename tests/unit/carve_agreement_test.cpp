@@ -24,7 +24,8 @@ TEST(CarveAgreement, FastAndReferenceEnginesAgreeOnOccupiedVoxels) {
   const SonarModel sonar = paperSonar();
   const Trajectory trajectory = makeTrajectory(TrajectorySpec{}, riser.target);
   const RayCaster caster(riser);
-  const SonarSimulator simulator(caster, sonar, ImagingSettings{});
+  ThreadPool pool;
+  const SonarSimulator simulator(caster, sonar, ImagingSettings{}, pool);
   CarveParams params;
   params.range_min_m = 3.6;
   params.range_max_m = 4.8;
@@ -32,7 +33,7 @@ TEST(CarveAgreement, FastAndReferenceEnginesAgreeOnOccupiedVoxels) {
       Eigen::AlignedBox3d(Eigen::Vector3d(-0.6, -0.6, 10.3), Eigen::Vector3d(0.2, 0.6, 11.3));
 
   VoxelMap map(params.voxel_size_m, *params.region);
-  FastCarver fast(map, sonar, params);
+  FastCarver fast(map, sonar, params, pool);
   ReferenceCarver reference(sonar, params);
   std::uint32_t stamp = 0;
   for (std::size_t i = 0; i < trajectory.poses.size(); ++i) {

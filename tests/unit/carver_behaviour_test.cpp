@@ -47,7 +47,8 @@ class CarverBehaviour : public ::testing::TestWithParam<CarverEngine> {
     carver.integrate(image, T, ++stamp_);
   }
   static float valueAt(const Carver& carver, const Eigen::Vector3d& p) {
-    const Eigen::Vector3i voxel = (p / CarveParams::kDefaultVoxelSize_m).array().floor().cast<int>();
+    const Eigen::Vector3i voxel =
+        (p / CarveParams::kDefaultVoxelSize_m).array().floor().cast<int>();
     return carver.value(voxel);
   }
 
@@ -119,8 +120,9 @@ TEST_P(CarverBehaviour, SurfaceCandidatesAreOccupiedVoxelsFacingNonOccupiedSpace
     ++candidates;
     EXPECT_EQ(value, carver->value(v));
     EXPECT_EQ(value, 50.0f);
-    const double range = ((v.cast<double>() + Eigen::Vector3d::Constant(0.5)) *
-                          CarveParams::kDefaultVoxelSize_m).norm();
+    const double range =
+        ((v.cast<double>() + Eigen::Vector3d::Constant(0.5)) * CarveParams::kDefaultVoxelSize_m)
+            .norm();
     EXPECT_GT(range, 2.0 - half_diagonal);
     EXPECT_LT(range, 2.04 + half_diagonal);
   });

@@ -10,7 +10,8 @@ namespace {
 TEST(MeshDistance, GivesTheDistanceToThePlateAndCapsItWhenAsked) {
   // A 2 m plate in the plane x = 3, facing -x.
   const Scene plate = test::plate({3, 0, 0}, {-1, 0, 0}, 2.0, 0.8f);
-  const MeshDistance distance(plate);
+  ThreadPool pool(2);
+  const MeshDistance distance(plate, pool);
   const std::vector<Eigen::Vector3f> points = {
       {3.0f, 0.2f, -0.4f}, {2.95f, 0.0f, 0.0f}, {2.0f, 0.5f, 0.5f}, {3.0f, 1.5f, 0.0f}};
   const std::vector<float> exact = distance.distances(points);

@@ -18,6 +18,11 @@ namespace {
 constexpr int kFrames = 24;
 constexpr int kSmoothing = 3;
 
+ThreadPool& pool() {
+  static ThreadPool instance(2);
+  return instance;
+}
+
 class MissionNoise : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -25,18 +30,26 @@ class MissionNoise : public ::testing::Test {
     for (const bool empty : {false, true}) {
       NoiseSpec noise;
       noise.seed = empty ? 7 : 1;  // independent draws: the two models' errors are independent
-      SimulationRequest request{makeDemoScene("riser"), "riser", paperSonar(), TrajectorySpec{},
-                                {},                     noise,   NavErrorSpec{}, empty,
-                                kFrames,                dir_->path() / (empty ? "empty" : "riser")};
+      SimulationRequest request{makeDemoScene("riser"),
+                                "riser",
+                                paperSonar(),
+                                TrajectorySpec{},
+                                {},
+                                noise,
+                                NavErrorSpec{},
+                                empty,
+                                kFrames,
+                                dir_->path() / (empty ? "empty" : "riser")};
       SilentProgress progress;
-      runSimulation(request, progress);
+      runSimulation(request, progress, pool());
     }
   }
   static void TearDownTestSuite() { delete dir_; }
   static Mission mission(const char* name) { return readMission(dir_->path() / name); }
   static std::vector<std::size_t> all() {
     std::vector<std::size_t> v(kFrames);
-    for (std::size_t i = 0; i < v.size(); ++i) v[i] = i;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      v[i] = i;
     return v;
   }
   static test::ScratchDir* dir_;
@@ -88,7 +101,8 @@ TEST_F(MissionNoise, AutoLearnsFromTheMissionAndNeverChoosesNoneOnSpeckle) {
   SilentProgress progress;
   const Mission riser = mission("riser");
   std::vector<PosedFrame> frames;
-  for (std::size_t i : all()) frames.push_back({i, Eigen::Isometry3d::Identity()});
+  for (std::size_t i : all())
+    frames.push_back({i, Eigen::Isometry3d::Identity()});
   DetectorParams detector;  // auto
   const NoiseChoice choice = chooseNoiseModel(riser, frames, detector, "", progress);
   EXPECT_EQ(choice.detector.mode, "ztest");
@@ -99,14 +113,15 @@ TEST_F(MissionNoise, AutoLearnsFromTheMissionAndNeverChoosesNoneOnSpeckle) {
 
 TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
   const test::ScratchDir dir;
-  SimulationRequest request{makeDemoScene("riser"), "riser",          paperSonar(), TrajectorySpec{},
-                            {},                     NoiseSpec::none(), NavErrorSpec{}, false,
-                            10,                     dir.path() / "m"};
+  SimulationRequest request{
+      makeDemoScene("riser"), "riser", paperSonar(), TrajectorySpec{}, {}, NoiseSpec::none(),
+      NavErrorSpec{},         false,   10,           dir.path() / "m"};
   SilentProgress progress;
-  runSimulation(request, progress);
+  runSimulation(request, progress, pool());
   const Mission m = readMission(dir.path() / "m");
   std::vector<PosedFrame> frames;
-  for (std::size_t i = 0; i < 10; ++i) frames.push_back({i, Eigen::Isometry3d::Identity()});
+  for (std::size_t i = 0; i < 10; ++i)
+    frames.push_back({i, Eigen::Isometry3d::Identity()});
   const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", progress);
   EXPECT_EQ(choice.detector.mode, "none");
   EXPECT_FALSE(choice.model);

@@ -46,8 +46,16 @@ Mission ringMission(std::size_t frames, std::vector<std::size_t> broken = {},
   std::vector<NavSample> samples(2);
   samples[1].time_s = nav_end_s;
   samples[1].position_m.z() = 0.05 * nav_end_s;
-  Mission mission{"rings",    "rings", tinySonar(), Mounting{}, NavTrack(samples), {}, "", "",
-                  std::make_shared<RingSource>(frames, std::move(broken)), {}};
+  Mission mission{"rings",
+                  "rings",
+                  tinySonar(),
+                  Mounting{},
+                  NavTrack(samples),
+                  {},
+                  "",
+                  "",
+                  std::make_shared<RingSource>(frames, std::move(broken)),
+                  {}};
   for (std::size_t i = 0; i < frames; ++i) {
     mission.frames.push_back({static_cast<double>(i), "tiny", "frame", 0});
   }
@@ -87,8 +95,8 @@ class CarveStageTest : public ::testing::Test {
     NoiseChoice none;
     none.detector = detector_;
     const DenoisedFrames frames(mission, mission.sonar, none);
-    return CarveStage(mission.sonar, params, pool_).run(posed, frames, progress, nullptr,
-                                                        skipped.sink());
+    return CarveStage(mission.sonar, params, pool_)
+        .run(posed, frames, progress, nullptr, skipped.sink());
   }
   DetectorParams detector_ = [] {
     DetectorParams d;
@@ -137,7 +145,8 @@ TEST_F(CarveStageTest, ARegionOutsideEveryViewIsAnErrorNamingTheRegion) {
   const Mission mission = ringMission(4);
   Skipped skipped;
   CarveStageParams params;
-  params.carve.region = Eigen::AlignedBox3d(Eigen::Vector3d(50, 50, 50), Eigen::Vector3d(51, 51, 51));
+  params.carve.region =
+      Eigen::AlignedBox3d(Eigen::Vector3d(50, 50, 50), Eigen::Vector3d(51, 51, 51));
   const auto posed = placeFrames(mission, {}, skipped.sink());
   try {
     CarveStage(mission.sonar, params, pool_).mapBounds(posed);

@@ -14,6 +14,13 @@
 namespace sonarcarve {
 namespace {
 
+ReconstructionResult runPipeline(const Mission& mission, const ReconstructionParams& params,
+                                 Progress& progress, ReconstructionObserver* observer = nullptr,
+                                 std::size_t update_every = 1) {
+  static ThreadPool pool(2);
+  return sonarcarve::Pipeline(mission, params, pool).run(progress, observer, update_every);
+}
+
 class Pipeline : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -23,7 +30,8 @@ class Pipeline : public ::testing::Test {
         makeDemoScene("riser"), "riser",        paperSonar(), trajectory, {},
         NoiseSpec::none(),      NavErrorSpec{}, false,        24,         dir_->path() / "riser"};
     SilentProgress progress;
-    runSimulation(request, progress);
+    ThreadPool pool;
+    runSimulation(request, progress, pool);
   }
   static void TearDownTestSuite() { delete dir_; }
   static std::filesystem::path mission() { return dir_->path() / "riser"; }
@@ -31,17 +39,20 @@ class Pipeline : public ::testing::Test {
 };
 test::ScratchDir* Pipeline::dir_ = nullptr;
 
+// Cancels once `reports` progress reports of stage `stage` have arrived.
 class CancelAfter : public Progress {
  public:
-  explicit CancelAfter(std::size_t reports) : left_(reports) {}
-  void report(const std::string&, std::size_t, std::size_t) override {
-    if (left_ > 0)
+  explicit CancelAfter(std::size_t reports, std::string stage = "carve")
+      : left_(reports), stage_(std::move(stage)) {}
+  void report(const std::string& stage, std::size_t, std::size_t) override {
+    if (left_ > 0 && stage == stage_)
       --left_;
   }
   bool cancelled() const override { return left_ == 0; }
 
  private:
   std::atomic<std::size_t> left_;
+  std::string stage_;
 };
 
 struct Recorder : ReconstructionObserver {
@@ -62,7 +73,7 @@ struct Recorder : ReconstructionObserver {
 TEST_F(Pipeline, ReconstructsTheRiserTopFromTheFramesThatSeeIt) {
   SilentProgress progress;
   const Mission m = readMission(mission());
-  const ReconstructionResult r = reconstruct(m, ReconstructionParams{}, progress);
+  const ReconstructionResult r = runPipeline(m, ReconstructionParams{}, progress);
   EXPECT_EQ(r.frames_used, 24u);
   EXPECT_TRUE(r.skipped.empty());
   EXPECT_FALSE(r.cancelled);
@@ -80,7 +91,7 @@ TEST_F(Pipeline, ViewerUpdatesAddUpToTheFinalMap) {
   SilentProgress progress;
   Recorder recorder;
   const Mission m = readMission(mission());
-  const ReconstructionResult r = reconstruct(m, ReconstructionParams{}, progress, &recorder, 5);
+  const ReconstructionResult r = runPipeline(m, ReconstructionParams{}, progress, &recorder, 5);
   EXPECT_EQ(recorder.carved.size(), 24u);
   std::set<std::tuple<float, float, float>> shown, actual;
   for (const auto& [block, points] : recorder.blocks) {
@@ -99,7 +110,7 @@ TEST_F(Pipeline, ViewerUpdatesFollowTheOcclusionAwareSecondCarving) {
   Recorder recorder;
   ReconstructionParams params;
   params.occlusion_aware_carving = true;
-  const ReconstructionResult r = reconstruct(readMission(mission()), params, progress, &recorder);
+  const ReconstructionResult r = runPipeline(readMission(mission()), params, progress, &recorder);
   std::size_t shown = 0;
   for (const auto& [block, points] : recorder.blocks) {
     shown += points.size();
@@ -116,7 +127,7 @@ TEST_F(Pipeline, BrokenFramesAreSkippedAndReported) {
   SilentProgress progress;
   Recorder recorder;
   const ReconstructionResult r =
-      reconstruct(readMission(copy), ReconstructionParams{}, progress, &recorder);
+      runPipeline(readMission(copy), ReconstructionParams{}, progress, &recorder);
   EXPECT_EQ(r.frames_used, 23u);
   ASSERT_EQ(r.skipped.size(), 1u);
   EXPECT_EQ(r.skipped[0].index, 5u);
@@ -124,10 +135,19 @@ TEST_F(Pipeline, BrokenFramesAreSkippedAndReported) {
   ASSERT_EQ(recorder.skipped.size(), 1u);
 }
 
+TEST_F(Pipeline, CancellingWhileTheNoiseIsLearnedStopsBeforeCarving) {
+  CancelAfter progress(2, "noise model");
+  const ReconstructionResult r =
+      runPipeline(readMission(mission()), ReconstructionParams{}, progress);
+  EXPECT_TRUE(r.cancelled);
+  EXPECT_EQ(r.frames_used, 0u);
+  EXPECT_TRUE(r.surface.empty());
+}
+
 TEST_F(Pipeline, CancellingStopsBetweenFrames) {
   CancelAfter progress(3);
   const ReconstructionResult r =
-      reconstruct(readMission(mission()), ReconstructionParams{}, progress);
+      runPipeline(readMission(mission()), ReconstructionParams{}, progress);
   EXPECT_TRUE(r.cancelled);
   EXPECT_EQ(r.frames_used, 3u);
 }
@@ -150,9 +170,9 @@ TEST_F(Pipeline, ApertureOverrideNarrowsWhatEachFrameCarves) {
   same.vertical_aperture_rad = m.sonar.verticalAperture();
   ReconstructionParams narrow = own;
   narrow.vertical_aperture_rad = m.sonar.verticalAperture() / 2.0;
-  const ReconstructionResult r_own = reconstruct(m, own, progress);
-  const ReconstructionResult r_same = reconstruct(m, same, progress);
-  const ReconstructionResult r_narrow = reconstruct(m, narrow, progress);
+  const ReconstructionResult r_own = runPipeline(m, own, progress);
+  const ReconstructionResult r_same = runPipeline(m, same, progress);
+  const ReconstructionResult r_narrow = runPipeline(m, narrow, progress);
   EXPECT_EQ(r_same.occupied_voxels, r_own.occupied_voxels);
   EXPECT_EQ(r_same.surface.size(), r_own.surface.size());
   // Half the aperture: each frustum is half as tall, so the map touches fewer blocks.

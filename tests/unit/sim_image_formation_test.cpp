@@ -24,8 +24,9 @@ SonarModel testSonar() {
 
 // Sonar at the origin looking north (world = sonar frame).
 cv::Mat render(const Scene& scene, const SonarModel& sonar, ImagingSettings settings = {}) {
+  ThreadPool pool;
   const RayCaster caster(scene);
-  const SonarSimulator sim(caster, sonar, settings);
+  const SonarSimulator sim(caster, sonar, settings, pool);
   return sim.render(Eigen::Isometry3d::Identity());
 }
 
@@ -123,7 +124,8 @@ TEST(SimImageFormation, GrazingSeabedGivesNoStriping) {
   // elevation, and each bin in the lit span must get a share, with no empty bins between.
   const SonarModel sonar = testSonar();
   const RayCaster caster(plate({5, 0, 1.5}, {0, 0, -1}, 30.0, 0.5f));
-  const SonarSimulator sim(caster, sonar, ImagingSettings{});
+  ThreadPool pool;
+  const SonarSimulator sim(caster, sonar, ImagingSettings{}, pool);
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = Eigen::AngleAxisd(degToRad(-10), Eigen::Vector3d::UnitY()).toRotationMatrix();
   const cv::Mat image = sim.render(T);
@@ -146,7 +148,8 @@ TEST(SimImageFormation, RiserDemoShowsTheRiserAtItsStandoff) {
   const Scene riser = makeDemoScene("riser");
   const SonarModel sonar = testSonar();
   const RayCaster caster(riser);
-  const SonarSimulator sim(caster, sonar, ImagingSettings{});
+  ThreadPool pool;
+  const SonarSimulator sim(caster, sonar, ImagingSettings{}, pool);
   // Sonar level at 17 m depth, 4.5 m south of the riser axis, looking north.
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.translation() = Eigen::Vector3d(-4.5, 0, 17.0);

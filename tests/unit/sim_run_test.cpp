@@ -2,9 +2,9 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "geometry/scene_io.h"
 #include "io/mission.h"
 #include "sim/demo_scenes.h"
-#include "sim/scene_io.h"
 #include "sim/simulation_run.h"
 #include "support/test_support.h"
 
@@ -46,7 +46,8 @@ TEST(SimulationRun, WritesAMissionWithGroundTruth) {
   SilentProgress progress;
   SimulationRequest request = riserRequest(dir.path() / "riser");
   request.nav_error = {0.01, 0.1, 3};
-  const SimulationResult result = runSimulation(request, progress);
+  ThreadPool pool;
+  const SimulationResult result = runSimulation(request, progress, pool);
   EXPECT_EQ(result.frames_written, 12u);
   EXPECT_FALSE(result.cancelled);
   const Mission mission = readMission(dir.path() / "riser");
@@ -85,7 +86,8 @@ TEST(SimulationRun, WritesAMissionWithGroundTruth) {
 TEST(SimulationRun, CancellingKeepsTheFramesDoneAsAValidMission) {
   test::ScratchDir dir;
   CancelAfter progress(2);
-  const SimulationResult result = runSimulation(riserRequest(dir.path() / "m"), progress);
+  ThreadPool pool;
+  const SimulationResult result = runSimulation(riserRequest(dir.path() / "m"), progress, pool);
   EXPECT_TRUE(result.cancelled);
   EXPECT_EQ(result.frames_written, 2u);
   const Mission mission = readMission(dir.path() / "m");
@@ -99,7 +101,8 @@ TEST(SimulationRun, EmptyWaterFramesHoldNoiseOnly) {
   SimulationRequest request = riserRequest(dir.path() / "empty");
   request.empty_water = true;
   request.noise.background_mean = 100.0;
-  runSimulation(request, progress);
+  ThreadPool pool;
+  runSimulation(request, progress, pool);
   const Mission mission = readMission(dir.path() / "empty");
   const Frame frame = loadFrame(mission, 0);
   // The riser at 4.3 m would be far above the background: the brightest pixel is noise.

@@ -53,9 +53,15 @@ Mission openToyRecording(const std::filesystem::path& path, const OpenOptions& o
   std::vector<NavSample> samples(2);
   samples[1].time_s = static_cast<double>(frames);
   samples[1].position_m.z() = 0.05 * static_cast<double>(frames);
-  Mission mission{path,     path.stem().string(), toySonar(),
-                  Mounting{}, NavTrack(samples),  {},
-                  "",       "",                   std::make_shared<ToySource>(frames),
+  Mission mission{path,
+                  path.stem().string(),
+                  toySonar(),
+                  Mounting{},
+                  NavTrack(samples),
+                  {},
+                  "",
+                  "",
+                  std::make_shared<ToySource>(frames),
                   {}};
   for (std::size_t i = 0; i < frames; ++i) {
     mission.frames.push_back({static_cast<double>(i), "toy", "frame " + std::to_string(i), 0});
@@ -88,7 +94,8 @@ TEST(ToyFrameSource, IsPickedByContentAndCarvedByThePipeline) {
   // from a sonar position on the vertical track.
   for (const SurfacePoint& p : result.surface) {
     const double horizontal = std::hypot(p.position_m.x(), p.position_m.y());
-    EXPECT_LT(std::abs(horizontal - 2.0), 0.04 + 0.02 * std::sqrt(3.0) + 2.0 * (1 - std::cos(degToRad(5))))
+    EXPECT_LT(std::abs(horizontal - 2.0),
+              0.04 + 0.02 * std::sqrt(3.0) + 2.0 * (1 - std::cos(degToRad(5))))
         << p.position_m.transpose();
   }
 }

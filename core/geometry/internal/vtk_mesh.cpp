@@ -1,4 +1,4 @@
-#include "sim/vtk_mesh.h"
+#include "geometry/internal/vtk_mesh.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>

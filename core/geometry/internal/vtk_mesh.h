@@ -1,5 +1,6 @@
-// Conversion between VTK poly data and Scene. Internal to core: VTK types never appear in
-// core's public headers.
+// Conversion between VTK poly data and Scene, for core's VTK-based steps (mesh files, demo
+// scenes, surface extraction, evaluation). Internal to core: VTK types never appear in core's
+// public headers (core/CMakeLists.txt).
 #pragma once
 
 #include <vtkPolyData.h>
@@ -9,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "sim/scene.h"
+#include "geometry/scene.h"
 
 namespace sonarcarve {
 

@@ -1,4 +1,4 @@
-#include "sim/scene_io.h"
+#include "geometry/scene_io.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -13,10 +13,10 @@
 #include <algorithm>
 
 #include "common/error.h"
+#include "geometry/internal/vtk_mesh.h"
 #include "io/atomic_file.h"
 #include "io/ply_check.h"
 #include "io/point_cloud_ply.h"
-#include "sim/vtk_mesh.h"
 
 namespace sonarcarve {
 namespace {

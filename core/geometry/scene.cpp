@@ -1,4 +1,4 @@
-#include "sim/scene.h"
+#include "geometry/scene.h"
 
 #include <Eigen/Geometry>
 #include <limits>

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "sim/scene.h"
+#include "geometry/scene.h"
 
 namespace sonarcarve {
 

@@ -1,7 +1,9 @@
 // Scene: a triangle mesh in the world frame (NED, metres) with a smooth-shading normal per
 // vertex and an acoustic reflectivity per triangle, plus where an inspection should look.
-// Plain data, no VTK types: the VTK-based builders and readers live in scene_io and
-// demo_scenes. Limits: float coordinates, so keep scenes within a few km of the origin.
+// The mesh type that the simulator, surface extraction and evaluation share. Plain data, no
+// VTK types: mesh files are read and written by geometry/scene_io, VTK conversions live in
+// geometry/internal/vtk_mesh. Limits: float coordinates, so keep scenes within a few km of the
+// origin.
 #pragma once
 
 #include <Eigen/Core>
