@@ -28,6 +28,7 @@ struct BenchOptions {
   int reference_frames = 3;
   std::string scene = "riser";
   int frames = 40;
+  std::string beam = "clipped";
   bool json = false;
 };
 
@@ -63,7 +64,9 @@ int benchSimulate(const BenchOptions& o, ThreadPool& pool) {
   Timings build;
   std::unique_ptr<RayCaster> caster;
   build.ms.push_back(timeMs([&] { caster = std::make_unique<RayCaster>(scene); }));
-  const SonarSimulator simulator(*caster, sonar, ImagingSettings{}, pool);
+  ImagingSettings imaging;
+  imaging.beam = beamFromName(o.beam);
+  const SonarSimulator simulator(*caster, sonar, imaging, pool);
   const NoiseSpec noise;
   Timings render;
   Timings with_noise;
@@ -83,6 +86,7 @@ int benchSimulate(const BenchOptions& o, ThreadPool& pool) {
   if (o.json) {
     nlohmann::json j = {{"bench", "simulate"},
                         {"scene", o.scene},
+                        {"beam", o.beam},
                         {"beams", sonar.cols()},
                         {"range_bins", sonar.rows()},
                         {"rays_per_frame", simulator.raysPerFrame()},
@@ -95,9 +99,9 @@ int benchSimulate(const BenchOptions& o, ThreadPool& pool) {
                         {"frames_per_second", fps}};
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    std::printf("simulate %s: %d x %d image, %zu rays per frame, %u threads, %zu frames\n",
-                o.scene.c_str(), sonar.cols(), sonar.rows(), simulator.raysPerFrame(), pool.size(),
-                render.ms.size());
+    std::printf("simulate %s, %s beam: %d x %d image, %zu rays per frame, %u threads, %zu frames\n",
+                o.scene.c_str(), o.beam.c_str(), sonar.cols(), sonar.rows(),
+                simulator.raysPerFrame(), pool.size(), render.ms.size());
     std::printf("  BVH build            %8.1f ms\n", build.median());
     std::printf("  render (median)      %8.1f ms   mean %.1f ms\n", render.median(), render.mean());
     std::printf("  render + noise       %8.1f ms   -> %.1f frames per second\n",
@@ -236,6 +240,9 @@ void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--scene", o->scene, "Demo scene")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Frames to time")->capture_default_str();
+  cmd->add_option("--beam", o->beam, "simulate: clipped | realistic (docs/simulator.md)")
+      ->check(CLI::IsMember({"clipped", "realistic"}))
+      ->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the figures as JSON");
   cmd->callback([o, &pool, &exit_code] {
     exit_code = o->what == "carve" ? benchCarve(*o, pool) : benchSimulate(*o, pool);

@@ -25,6 +25,8 @@ struct SimulateOptions {
   double nav_attitude_sigma_deg = 0.0;
   double elevation_step_deg = 0.1;
   int rays_per_beam = 2;
+  std::string beam = "clipped";
+  double horizontal_beam_width_deg = 0.0;
   float reflectivity = 0.8f;
   bool empty_water = false;
   bool force = false;
@@ -53,6 +55,8 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   ImagingSettings imaging;
   imaging.elevation_step_rad = degToRad(o.elevation_step_deg);
   imaging.rays_per_beam = o.rays_per_beam;
+  imaging.beam = beamFromName(o.beam);
+  imaging.horizontal_beam_width_rad = degToRad(o.horizontal_beam_width_deg);
   const SimulationRequest request{
       isDemoScene(o.scene) ? makeDemoScene(o.scene) : loadSceneMesh(o.scene, o.reflectivity),
       o.scene,
@@ -105,6 +109,16 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   cmd->add_option("--elevation-step", o->elevation_step_deg, "Ray spacing in elevation, deg")
       ->capture_default_str();
   cmd->add_option("--rays-per-beam", o->rays_per_beam, "Rays across each beam")
+      ->capture_default_str();
+  cmd->add_option("--beam", o->beam,
+                  "clipped: the seed paper's beam, +-aperture/2 only; realistic: sinc^2 in "
+                  "elevation to the second null and leakage between beams (docs/simulator.md)")
+      ->check(CLI::IsMember({"clipped", "realistic"}))
+      ->capture_default_str();
+  cmd->add_option("--horizontal-beam-width", o->horizontal_beam_width_deg,
+                  "Realistic beam: -3 dB width of each beam in bearing, deg; 0 = the bearing "
+                  "spacing")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--reflectivity", o->reflectivity, "Reflectivity of a loaded mesh, 0..1")
       ->capture_default_str();

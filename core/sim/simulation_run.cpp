@@ -15,7 +15,8 @@
 namespace sonarcarve {
 namespace {
 
-std::string settingsYaml(const SimulationRequest& r, std::size_t frames) {
+std::string settingsYaml(const SimulationRequest& r, std::size_t frames,
+                         double traced_elevation_rad) {
   std::ostringstream out;
   const auto& t = r.trajectory;
   out << "# Settings this mission was simulated with (sonarcarve-cli simulate).\n"
@@ -36,6 +37,12 @@ std::string settingsYaml(const SimulationRequest& r, std::size_t frames) {
       << "  gain: " << shortestNumber(r.imaging.gain) << "\n"
       << "  spreading_exponent: " << shortestNumber(r.imaging.spreading_exponent) << "\n"
       << "  tvg_exponent: " << shortestNumber(r.imaging.tvg_exponent) << "\n"
+      << "  beam: " << beamName(r.imaging.beam) << "\n"
+      << "  traced_elevation_deg: " << shortestDegrees(traced_elevation_rad) << "\n"
+      << "  side_lobes: " << r.imaging.side_lobes << "\n"
+      << "  horizontal_beam_width_deg: " << shortestDegrees(r.imaging.horizontal_beam_width_rad)
+      << "\n"
+      << "  visible_beam_level_db: " << shortestNumber(r.imaging.visible_beam_level_db) << "\n"
       << "navigation_error:\n"
       << "  position_sigma_m: " << shortestNumber(r.nav_error.position_sigma_m) << "\n"
       << "  attitude_sigma_deg: " << shortestNumber(r.nav_error.attitude_sigma_deg) << "\n"
@@ -106,7 +113,8 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   if (!request.empty_water) {
     writePointsPly(visible.points(), request.output / "visible_points.ply");
   }
-  writeFileAtomically(request.output / "simulation.yaml", settingsYaml(request, written));
+  writeFileAtomically(request.output / "simulation.yaml",
+                      settingsYaml(request, written, simulator.tracedElevation()));
   result.visible_points = visible.size();
   return result;
 }

@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "common/error.h"
+#include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
 namespace {
@@ -44,7 +45,52 @@ void spreadOverRange(float r0, float r1, float energy, const RangeBins& bins, fl
   }
 }
 
+// Left edge and width of traced beam `j`, which may lie beyond the fan (j < 0 or j >= count):
+// those continue the outer beams' spacing.
+std::pair<double, double> tracedBeam(const BearingTable& table, int j) {
+  const auto& edges = table.edges();
+  const int n = table.count();
+  if (j < 0) {
+    const double width = edges[1] - edges[0];
+    return {edges[0] + j * width, width};
+  }
+  if (j >= n) {
+    const double width =
+        edges[static_cast<std::size_t>(n)] - edges[static_cast<std::size_t>(n) - 1];
+    return {edges[static_cast<std::size_t>(n)] + (j - n) * width, width};
+  }
+  const auto u = static_cast<std::size_t>(j);
+  return {edges[u], edges[u + 1] - edges[u]};
+}
+
+// Bearing of every traced ray, beam by beam from `pad` beams left of the fan to `pad` beams
+// right of it, `rays` per beam.
+std::vector<double> rayBearings(const BearingTable& table, int pad, int rays) {
+  std::vector<double> bearings;
+  for (int j = -pad; j < table.count() + pad; ++j) {
+    const auto [left, width] = tracedBeam(table, j);
+    for (int s = 0; s < rays; ++s) {
+      bearings.push_back(left + (s + 0.5) * width / rays);
+    }
+  }
+  return bearings;
+}
+
 }  // namespace
+
+std::string beamName(SimulatedBeam beam) {
+  return beam == SimulatedBeam::Realistic ? "realistic" : "clipped";
+}
+
+SimulatedBeam beamFromName(const std::string& name) {
+  if (name == "realistic") {
+    return SimulatedBeam::Realistic;
+  }
+  if (name == "clipped") {
+    return SimulatedBeam::Clipped;
+  }
+  throw Error("simulator", "beam", "expected 'realistic' or 'clipped', not '" + name + "'");
+}
 
 SonarSimulator::SonarSimulator(const RayCaster& caster, const SonarModel& sonar,
                                ImagingSettings settings, ThreadPool& pool)
@@ -52,111 +98,201 @@ SonarSimulator::SonarSimulator(const RayCaster& caster, const SonarModel& sonar,
   if (!(settings_.elevation_step_rad > 0.0) || settings_.rays_per_beam < 1) {
     throw Error("simulator", "settings", "expected a positive elevation step and >= 1 ray/beam");
   }
-  const double aperture = sonar.verticalAperture();
-  elevations_ = std::max(2, static_cast<int>(std::ceil(aperture / settings_.elevation_step_rad)));
-  const double step = aperture / elevations_;
-  for (int k = 0; k < elevations_; ++k) {
-    beam_weight_.push_back(
-        static_cast<float>(sonar.beamPattern().weight(-0.5 * aperture + (k + 0.5) * step)));
+  if (settings_.side_lobes < 0 || !(settings_.horizontal_beam_width_rad >= 0.0) ||
+      !std::isfinite(settings_.horizontal_beam_width_rad) ||
+      !(settings_.visible_beam_level_db < 0.0)) {
+    throw Error("simulator", "settings",
+                "expected side lobes >= 0, a horizontal beam width >= 0 and a visible beam "
+                "level below 0 dB");
   }
-  const auto& edges = sonar.bearings().edges();
+  const double aperture = sonar.verticalAperture();
+  const bool realistic = settings_.beam == SimulatedBeam::Realistic;
+  const SincSquaredBeam elevation_beam(aperture);
+  traced_elevation_rad_ =
+      realistic ? elevation_beam.null(settings_.side_lobes + 1) : 0.5 * aperture;
+  const double traced = 2.0 * traced_elevation_rad_;
+  elevations_ = std::max(2, static_cast<int>(std::ceil(traced / settings_.elevation_step_rad)));
+  const double step = traced / elevations_;
   const int rays = settings_.rays_per_beam;
-  directions_.reserve(static_cast<std::size_t>(sonar.cols() * rays * elevations_));
-  for (int j = 0; j < sonar.cols(); ++j) {
-    const double left = edges[static_cast<std::size_t>(j)];
-    const double width = edges[static_cast<std::size_t>(j) + 1] - left;
-    for (int s = 0; s < rays; ++s) {
-      const double bearing = left + (s + 0.5) * width / rays;
-      for (int k = 0; k < elevations_; ++k) {
-        const double elevation = -0.5 * aperture + (k + 0.5) * step;
-        directions_.push_back(pointFromPolar({1.0, bearing, elevation}).cast<float>());
-      }
+  // Each sample stands for dtheta / A of the aperture; sub-rays share the beam.
+  sample_scale_ = realistic
+                      ? static_cast<float>(settings_.gain * step / (aperture * rays))
+                      : static_cast<float>(settings_.gain) / static_cast<float>(elevations_ * rays);
+  const double visible_half = elevation_beam.halfAngleAt(settings_.visible_beam_level_db);
+  for (int k = 0; k < elevations_; ++k) {
+    const double theta = -traced_elevation_rad_ + (k + 0.5) * step;
+    // Realistic: a ray stands for a cell of solid angle cos(theta) dtheta dphi, so that a
+    // small target returns p(theta) at any elevation (rays crowd in bearing as |theta| grows).
+    beam_weight_.push_back(static_cast<float>(realistic
+                                                  ? elevation_beam.power(theta) * std::cos(theta)
+                                                  : sonar.beamPattern().weight(theta)));
+    visible_elevation_.push_back(static_cast<char>(std::abs(theta) <= visible_half));
+  }
+  if (realistic) {
+    addBearingLeakage(sonar);
+  }
+  traceBearings(sonar);
+}
+
+void SonarSimulator::traceBearings(const SonarModel& sonar) {
+  const double step = 2.0 * traced_elevation_rad_ / elevations_;
+  const std::vector<double> bearings =
+      rayBearings(sonar.bearings(), pad_beams_, settings_.rays_per_beam);
+  directions_.reserve(bearings.size() * static_cast<std::size_t>(elevations_));
+  for (const double bearing : bearings) {
+    for (int k = 0; k < elevations_; ++k) {
+      const double elevation = -traced_elevation_rad_ + (k + 0.5) * step;
+      directions_.push_back(pointFromPolar({1.0, bearing, elevation}).cast<float>());
     }
   }
 }
 
+void SonarSimulator::addBearingLeakage(const SonarModel& sonar) {
+  const BearingTable& table = sonar.bearings();
+  const int rays = settings_.rays_per_beam;
+  const auto widthOf = [&](int j) {
+    return settings_.horizontal_beam_width_rad > 0.0 ? settings_.horizontal_beam_width_rad
+                                                     : tracedBeam(table, j).second;
+  };
+  // Enough beams beyond each edge for the outer beams' traced extent.
+  for (int j : {0, table.count() - 1}) {
+    const double extent = SincSquaredBeam(widthOf(j)).null(settings_.side_lobes + 1);
+    pad_beams_ =
+        std::max(pad_beams_, static_cast<int>(std::ceil(extent / tracedBeam(table, j).second)));
+  }
+  const std::vector<double> ray_bearing = rayBearings(table, pad_beams_, rays);
+  // Beam j takes every sub-ray within its traced extent, weighted by its power pattern; the
+  // weights sum to rays_per_beam, so that a target wider than the beam gives the clipped
+  // beam's counts.
+  tap_offset_.push_back(0);
+  for (int j = 0; j < table.count(); ++j) {
+    const SincSquaredBeam beam(widthOf(j));
+    const double centre = table.centre(j);
+    const double extent = beam.null(settings_.side_lobes + 1);
+    const auto first = std::upper_bound(ray_bearing.begin(), ray_bearing.end(), centre - extent);
+    const auto last = std::lower_bound(ray_bearing.begin(), ray_bearing.end(), centre + extent);
+    tap_first_.push_back(static_cast<int>(first - ray_bearing.begin()));
+    double total = 0.0;
+    for (auto it = first; it != last; ++it) {
+      total += beam.power(*it - centre);
+    }
+    for (auto it = first; it != last; ++it) {
+      tap_weight_.push_back(static_cast<float>(rays * beam.power(*it - centre) / total));
+    }
+    tap_offset_.push_back(static_cast<int>(tap_weight_.size()));
+  }
+}
+
+cv::Mat SonarSimulator::leak(const cv::Mat& ray_columns) const {
+  cv::Mat image(sonar_.rows(), sonar_.cols(), CV_32F, cv::Scalar(0.0f));
+  pool_.parallelFor(static_cast<std::size_t>(image.rows), 16,
+                    [&](std::size_t begin, std::size_t end) {
+                      for (std::size_t r = begin; r < end; ++r) {
+                        const float* in = ray_columns.ptr<float>(static_cast<int>(r));
+                        float* out = image.ptr<float>(static_cast<int>(r));
+                        for (int j = 0; j < image.cols; ++j) {
+                          const float* x = in + tap_first_[static_cast<std::size_t>(j)];
+                          float sum = 0.0f;
+                          for (int t = tap_offset_[static_cast<std::size_t>(j)];
+                               t < tap_offset_[static_cast<std::size_t>(j) + 1]; ++t, ++x) {
+                            sum += tap_weight_[static_cast<std::size_t>(t)] * *x;
+                          }
+                          out[j] = sum;
+                        }
+                      }
+                    });
+  return image;
+}
+
 cv::Mat SonarSimulator::render(const Eigen::Isometry3d& T_world_sonar, const HitSink& hits) const {
-  const int rows = sonar_.rows();
   const int cols = sonar_.cols();
-  cv::Mat image(rows, cols, CV_32F, cv::Scalar(0.0f));
+  const bool realistic = settings_.beam == SimulatedBeam::Realistic;
+  const int rays = settings_.rays_per_beam;
+  const int traced_beams = cols + 2 * pad_beams_;
+  // Clipped: every ray adds into its own beam's column. Realistic: into its own sub-ray
+  // column, which leak() then shares among the beams.
+  cv::Mat target(sonar_.rows(), realistic ? traced_beams * rays : cols, CV_32F, cv::Scalar(0.0f));
+  const int stride = target.cols;
   const Eigen::Matrix3f R = T_world_sonar.linear().cast<float>();
   const Eigen::Vector3f origin = T_world_sonar.translation().cast<float>();
   const float max_range = static_cast<float>(sonar_.range().maxRange());
-  const int rays = settings_.rays_per_beam;
   const int K = elevations_;
-  // Each sample stands for dtheta / A of the aperture; sub-rays share the beam.
-  const float per_sample = static_cast<float>(settings_.gain) / static_cast<float>(K * rays);
   std::mutex hits_mutex;
 
-  pool_.parallelFor(static_cast<std::size_t>(cols), 8, [&](std::size_t begin, std::size_t end) {
-    std::vector<Sample> fan(static_cast<std::size_t>(K));
-    std::vector<Eigen::Vector3f> seen;
-    for (std::size_t j = begin; j < end; ++j) {
-      float* column = image.ptr<float>(0) + j;
-      for (int s = 0; s < rays; ++s) {
-        const Eigen::Vector3f* dirs =
-            &directions_[(j * static_cast<std::size_t>(rays) + static_cast<std::size_t>(s)) *
-                         static_cast<std::size_t>(K)];
-        for (int k = 0; k < K; ++k) {
-          Sample& sample = fan[static_cast<std::size_t>(k)];
-          const Eigen::Vector3f dir = R * dirs[k];
-          RayHit hit;
-          sample.hit = caster_.intersect(origin, dir, max_range, hit);
-          if (!sample.hit) {
-            continue;
-          }
-          sample.range = hit.distance;
-          sample.point = origin + hit.distance * dir;
-          const float cos_incidence = std::abs(hit.normal.dot(dir));
-          double range_factor = 1.0;
-          if (settings_.spreading_exponent != 0.0 || settings_.tvg_exponent != 0.0) {
-            range_factor = std::pow(static_cast<double>(hit.distance),
-                                    settings_.tvg_exponent - settings_.spreading_exponent);
-          }
-          sample.energy = per_sample * caster_.scene().reflectivity[hit.triangle] * cos_incidence *
-                          beam_weight_[static_cast<std::size_t>(k)] *
-                          static_cast<float>(range_factor);
-          if (hits && cos_incidence >= settings_.visible_min_cos_incidence &&
-              sonar_.range().binOf(hit.distance)) {
-            seen.push_back(sample.point);
+  pool_.parallelFor(
+      static_cast<std::size_t>(traced_beams), 8, [&](std::size_t begin, std::size_t end) {
+        std::vector<Sample> fan(static_cast<std::size_t>(K));
+        std::vector<Eigen::Vector3f> seen;
+        for (std::size_t j = begin; j < end; ++j) {
+          const auto beam = static_cast<int>(j) - pad_beams_;
+          const bool in_fan = beam >= 0 && beam < cols;
+          for (int s = 0; s < rays; ++s) {
+            float* column =
+                target.ptr<float>(0) + (realistic ? static_cast<int>(j) * rays + s : beam);
+            const Eigen::Vector3f* dirs =
+                &directions_[(j * static_cast<std::size_t>(rays) + static_cast<std::size_t>(s)) *
+                             static_cast<std::size_t>(K)];
+            for (int k = 0; k < K; ++k) {
+              Sample& sample = fan[static_cast<std::size_t>(k)];
+              const Eigen::Vector3f dir = R * dirs[k];
+              RayHit hit;
+              sample.hit = caster_.intersect(origin, dir, max_range, hit);
+              if (!sample.hit) {
+                continue;
+              }
+              sample.range = hit.distance;
+              sample.point = origin + hit.distance * dir;
+              const float cos_incidence = std::abs(hit.normal.dot(dir));
+              double range_factor = 1.0;
+              if (settings_.spreading_exponent != 0.0 || settings_.tvg_exponent != 0.0) {
+                range_factor = std::pow(static_cast<double>(hit.distance),
+                                        settings_.tvg_exponent - settings_.spreading_exponent);
+              }
+              sample.energy = sample_scale_ * caster_.scene().reflectivity[hit.triangle] *
+                              cos_incidence * beam_weight_[static_cast<std::size_t>(k)] *
+                              static_cast<float>(range_factor);
+              if (hits && in_fan && visible_elevation_[static_cast<std::size_t>(k)] != 0 &&
+                  cos_incidence >= settings_.visible_min_cos_incidence &&
+                  sonar_.range().binOf(hit.distance)) {
+                seen.push_back(sample.point);
+              }
+            }
+            // Half of each sample's elevation interval lies towards each neighbour. Where two
+            // neighbours hit one continuous surface (hit points no farther apart than a surface at
+            // 83 degrees of incidence puts them), their facing halves are spread over the ranges
+            // between the hits; every other half stays at its own sample's range.
+            const float step = static_cast<float>(settings_.elevation_step_rad);
+            const auto linked = [&](int k) {
+              const Sample& a = fan[static_cast<std::size_t>(k)];
+              const Sample& b = fan[static_cast<std::size_t>(k) + 1];
+              return a.hit && b.hit && (a.point - b.point).norm() < 8.0f * a.range * step + 0.01f;
+            };
+            bool linked_below = false;
+            for (int k = 0; k < K; ++k) {
+              const Sample& a = fan[static_cast<std::size_t>(k)];
+              const bool linked_above = k + 1 < K && linked(k);
+              if (a.hit && !linked_below) {
+                spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column, stride);
+              }
+              if (linked_above) {
+                const Sample& b = fan[static_cast<std::size_t>(k) + 1];
+                spreadOverRange(a.range, b.range, 0.5f * (a.energy + b.energy), sonar_.range(),
+                                column, stride);
+              } else if (a.hit) {
+                spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column, stride);
+              }
+              linked_below = linked_above;
+            }
           }
         }
-        // Half of each sample's elevation interval lies towards each neighbour. Where two
-        // neighbours hit one continuous surface (hit points no farther apart than a surface at
-        // 83 degrees of incidence puts them), their facing halves are spread over the ranges
-        // between the hits; every other half stays at its own sample's range.
-        const float step = static_cast<float>(settings_.elevation_step_rad);
-        const auto linked = [&](int k) {
-          const Sample& a = fan[static_cast<std::size_t>(k)];
-          const Sample& b = fan[static_cast<std::size_t>(k) + 1];
-          return a.hit && b.hit && (a.point - b.point).norm() < 8.0f * a.range * step + 0.01f;
-        };
-        bool linked_below = false;
-        for (int k = 0; k < K; ++k) {
-          const Sample& a = fan[static_cast<std::size_t>(k)];
-          const bool linked_above = k + 1 < K && linked(k);
-          if (a.hit && !linked_below) {
-            spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column, cols);
+        if (hits && !seen.empty()) {
+          std::lock_guard lock(hits_mutex);
+          for (const auto& p : seen) {
+            hits(p);
           }
-          if (linked_above) {
-            const Sample& b = fan[static_cast<std::size_t>(k) + 1];
-            spreadOverRange(a.range, b.range, 0.5f * (a.energy + b.energy), sonar_.range(), column,
-                            cols);
-          } else if (a.hit) {
-            spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column, cols);
-          }
-          linked_below = linked_above;
         }
-      }
-    }
-    if (hits && !seen.empty()) {
-      std::lock_guard lock(hits_mutex);
-      for (const auto& p : seen) {
-        hits(p);
-      }
-    }
-  });
-  return image;
+      });
+  return realistic ? leak(target) : target;
 }
 
 }  // namespace sonarcarve

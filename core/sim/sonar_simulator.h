@@ -1,9 +1,19 @@
 // SonarSimulator: forms noise-free polar images of a Scene, following the seed paper's imaging
-// model. Each pixel (range, bearing) sums, over the elevations of the vertical aperture
-// (|theta| <= aperture/2), the returns of the first surface along each ray, weighted by the
-// beam pattern b(theta), the Lambertian term cos(incidence) and the surface reflectivity:
+// model. Each pixel (range, bearing) sums, over elevation, the returns of the first surface
+// along each ray, weighted by the beam's power pattern p(theta), the Lambertian term
+// cos(incidence) and the surface reflectivity:
 //
-//   I(r, phi) = gain * sum over rays in the pixel of  R * cos(incidence) * b(theta) * dtheta / A
+//   I(r, phi) = gain * sum over rays in the pixel of  R * cos(incidence) * p(theta) * dtheta / A
+//
+// Two beams (ImagingSettings::beam):
+// - Realistic: p is sinc^2 (-3 dB at +-aperture/2, sonar/beam_pattern.h) times cos(theta), the
+//   solid angle of a ray's cell, traced in elevation past the main lobe to the null after the
+//   last traced side lobe (the second null, +-45.2 degrees for a 20 degree aperture, by
+//   default); in bearing each beam also takes the rays of its neighbours, weighted by a sinc^2
+//   of the horizontal beam width, to the same null (bearing leakage), rays being traced past
+//   the fan's edges for the outer beams.
+// - Clipped: the seed paper's model, p = the sinc of BeamPattern over |theta| <= aperture/2
+//   only, each ray in its own beam.
 //
 // Rays are cast `rays_per_beam` times per beam and every `elevation_step_rad`; between two
 // consecutive elevations that hit the same continuous surface, the return is spread over the
@@ -15,6 +25,7 @@
 #include <Eigen/Geometry>
 #include <functional>
 #include <opencv2/core.hpp>
+#include <string>
 #include <vector>
 
 #include "common/thread_pool.h"
@@ -22,6 +33,12 @@
 #include "sonar/sonar_model.h"
 
 namespace sonarcarve {
+
+enum class SimulatedBeam { Clipped, Realistic };
+
+/// "clipped" / "realistic", and back (throws Error on other names).
+std::string beamName(SimulatedBeam beam);
+SimulatedBeam beamFromName(const std::string& name);
 
 struct ImagingSettings {
   double elevation_step_rad = 0.1 * 3.14159265358979323846 / 180.0;  ///< ray spacing in theta
@@ -36,10 +53,22 @@ struct ImagingSettings {
   /// than 78 degrees returns under a fifth of a facing one and cannot be placed in elevation
   /// (its returns span a fraction of an elevation step), so no reconstruction recovers it.
   double visible_min_cos_incidence = 0.2;
+  /// The beam model (see the top of this file). Clipped is the default while the carving
+  /// engines back-project over +-aperture/2 only (docs/simulator.md).
+  SimulatedBeam beam = SimulatedBeam::Clipped;
+  /// Realistic beam: side lobes traced on each side, in elevation and in bearing; the traced
+  /// extent ends at the null after the last of them (>= 0; 0 = the main lobe only).
+  int side_lobes = 1;
+  /// Realistic beam: -3 dB width of each beam in bearing; 0 = its spacing in the bearing table.
+  double horizontal_beam_width_rad = 0.0;
+  /// Hits reported as seen (HitSink) lie inside the elevation main lobe where its power is at
+  /// least this level (dB, < 0): -3 dB = |theta| <= aperture/2, where the engines back-project.
+  double visible_beam_level_db = -3.0;
 };
 
 /// Called with each surface point a ray hit inside the sonar's window (world frame), when the
-/// hit is not grazing (ImagingSettings::visible_min_cos_incidence).
+/// hit is not grazing (ImagingSettings::visible_min_cos_incidence) and lies inside the
+/// visible part of the beam (ImagingSettings::visible_beam_level_db).
 using HitSink = std::function<void(const Eigen::Vector3f& p_world)>;
 
 class SonarSimulator {
@@ -54,15 +83,30 @@ class SonarSimulator {
 
   const ImagingSettings& settings() const { return settings_; }
   std::size_t raysPerFrame() const { return directions_.size(); }
+  /// Elevation traced on each side of the axis, radians.
+  double tracedElevation() const { return traced_elevation_rad_; }
 
  private:
+  void traceBearings(const SonarModel& sonar);
+  void addBearingLeakage(const SonarModel& sonar);
+  cv::Mat leak(const cv::Mat& ray_columns) const;
+
   const RayCaster& caster_;
   const SonarModel& sonar_;
   ImagingSettings settings_;
   ThreadPool& pool_;
   int elevations_ = 0;
-  std::vector<Eigen::Vector3f> directions_;  // sonar frame; [beam][sub-ray][elevation]
-  std::vector<float> beam_weight_;           // b(theta) per elevation sample
+  double traced_elevation_rad_ = 0.0;
+  float sample_scale_ = 0.0f;                // gain * dtheta / (A * rays_per_beam)
+  std::vector<Eigen::Vector3f> directions_;  // sonar frame; [traced beam][sub-ray][elevation]
+  std::vector<float> beam_weight_;           // p(theta) per elevation sample
+  std::vector<char> visible_elevation_;      // per elevation sample: hits there are "seen"
+  // Realistic beam: beams traced beyond each edge of the fan (for the outer beams' leakage),
+  // and for every image beam its taps over the traced sub-ray columns.
+  int pad_beams_ = 0;
+  std::vector<int> tap_first_;   // first sub-ray column of each beam's taps
+  std::vector<int> tap_offset_;  // start of each beam's weights in tap_weight_ (cols + 1)
+  std::vector<float> tap_weight_;
 };
 
 }  // namespace sonarcarve

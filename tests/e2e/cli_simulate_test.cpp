@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <cmath>
 #include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
 
@@ -15,6 +16,12 @@ namespace {
 using test::quoted;
 using test::runCli;
 
+// The number after "key: " in a settings text, or NaN.
+double settingValue(const std::string& text, const std::string& key) {
+  const auto at = text.find(key + ": ");
+  return at == std::string::npos ? NAN : std::stod(text.substr(at + key.size() + 2));
+}
+
 TEST(CliSimulate, WritesARiserMissionThatInfoReads) {
   test::ScratchDir dir;
   const auto out = dir.path() / "riser";
@@ -27,12 +34,30 @@ TEST(CliSimulate, WritesARiserMissionThatInfoReads) {
   EXPECT_EQ(mission.sonar.rows(), 500);
   const std::string settings = test::readText(out / "simulation.yaml");
   EXPECT_NE(settings.find("seed: 4"), std::string::npos) << settings;
+  EXPECT_NE(settings.find("beam: clipped"), std::string::npos) << settings;
+  EXPECT_DOUBLE_EQ(settingValue(settings, "traced_elevation_deg"), 10.0) << settings;
 
   // It refuses to overwrite a mission unless told to.
   const auto again = runCli("simulate --scene riser --max-frames 1 --out " + quoted(out));
   EXPECT_NE(again.exit_code, 0);
   EXPECT_NE(again.output.find("already holds a mission"), std::string::npos) << again.output;
   EXPECT_EQ(readMission(out).frames.size(), 3u);
+}
+
+TEST(CliSimulate, RealisticBeamIsRecordedInTheSettings) {
+  test::ScratchDir dir;
+  const auto out = dir.path() / "riser";
+  const auto r =
+      runCli("simulate --scene riser --max-frames 2 --beam realistic --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(readMission(out).frames.size(), 2u);
+  const std::string settings = test::readText(out / "simulation.yaml");
+  EXPECT_NE(settings.find("beam: realistic"), std::string::npos) << settings;
+  // Traced to the second null of a 20 degree sinc^2: 45.2 degrees.
+  EXPECT_NEAR(settingValue(settings, "traced_elevation_deg"), 45.22, 0.01) << settings;
+  const auto bad = runCli("simulate --scene riser --beam fuzzy --out " + quoted(dir.path() / "b"));
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("--beam"), std::string::npos) << bad.output;
 }
 
 TEST(CliSimulate, BadSceneOrTrajectoryFailsWithAMessage) {

@@ -9,13 +9,19 @@
 namespace sonarcarve {
 namespace {
 
+// pattern(0) = 1 and pattern(+-width/2) = -3 dB.
+template <typename Pattern>
+void expectOneOnAxisAndMinus3dBAtHalf(Pattern pattern, double width_rad) {
+  EXPECT_DOUBLE_EQ(pattern(0.0), 1.0);
+  for (double angle : {0.5 * width_rad, -0.5 * width_rad}) {
+    EXPECT_NEAR(10 * std::log10(pattern(angle)), -3.0, 1e-9) << width_rad;
+  }
+}
+
 TEST(BeamPattern, IsOneOnAxisAndMinus3dBAtHalfAperture) {
   for (double aperture_deg : {10.0, 20.0, 28.0}) {
     const BeamPattern b(degToRad(aperture_deg));
-    EXPECT_DOUBLE_EQ(b.weight(0.0), 1.0);
-    const double half = degToRad(aperture_deg) / 2;
-    EXPECT_NEAR(10 * std::log10(b.weight(half)), -3.0, 1e-9);
-    EXPECT_NEAR(10 * std::log10(b.weight(-half)), -3.0, 1e-9);
+    expectOneOnAxisAndMinus3dBAtHalf([&](double t) { return b.weight(t); }, degToRad(aperture_deg));
   }
 }
 
@@ -46,6 +52,49 @@ TEST(BeamPattern, RejectsNonPositiveAperture) {
   EXPECT_THROW(BeamPattern(0.0), Error);
   EXPECT_THROW(BeamPattern(-1.0), Error);
   EXPECT_THROW(BeamPattern(NAN), Error);
+  EXPECT_THROW(SincSquaredBeam(0.0), Error);
+  EXPECT_THROW(SincSquaredBeam(NAN), Error);
+}
+
+TEST(SincSquaredBeam, IsOneOnAxisAndMinus3dBAtHalfWidth) {
+  for (double width_deg : {1.0, 20.0, 28.0}) {
+    const SincSquaredBeam b(degToRad(width_deg));
+    expectOneOnAxisAndMinus3dBAtHalf([&](double t) { return b.power(t); }, degToRad(width_deg));
+    EXPECT_NEAR(b.halfAngleAt(-3.0), degToRad(width_deg) / 2, 1e-12);
+  }
+  const double x = sincSquaredMinus3dBArgument();
+  EXPECT_NEAR(std::pow(std::sin(x) / x, 2), std::pow(10.0, -0.3), 1e-12);
+}
+
+TEST(SincSquaredBeam, NullsAndSideLobesOfAUniformAperture) {
+  // The textbook values: -3 dB (10^-0.3) at x = 1.3894, first null at pi / 1.3894 = 2.261
+  // half-widths (22.6 degrees for 20), first side lobe at x = 4.4934 (tan x = x) and
+  // -13.26 dB, second null at 2 pi.
+  const SincSquaredBeam b(degToRad(20));
+  const double half = degToRad(10);
+  EXPECT_NEAR(sincSquaredMinus3dBArgument(), 1.3894, 1e-4);
+  EXPECT_NEAR(b.null(1) / half, M_PI / sincSquaredMinus3dBArgument(), 1e-12);
+  EXPECT_NEAR(radToDeg(b.null(1)), 22.61, 0.01);
+  EXPECT_NEAR(b.null(2), 2 * b.null(1), 1e-12);
+  EXPECT_LT(b.power(b.null(1)), 1e-20);
+  EXPECT_LT(b.power(b.null(2)), 1e-20);
+  const double k = sincSquaredMinus3dBArgument() / half;
+  EXPECT_NEAR(k * b.sideLobePeak(1), 4.4934, 1e-4);
+  EXPECT_NEAR(k * b.sideLobePeak(2), 7.7253, 1e-4);
+  EXPECT_NEAR(10 * std::log10(b.power(b.sideLobePeak(1))), -13.26, 0.005);
+  EXPECT_NEAR(10 * std::log10(b.power(b.sideLobePeak(2))), -17.83, 0.005);
+  // A peak: the pattern is lower on either side.
+  for (int n : {1, 2}) {
+    EXPECT_GT(b.power(b.sideLobePeak(n)), b.power(b.sideLobePeak(n) * 1.01));
+    EXPECT_GT(b.power(b.sideLobePeak(n)), b.power(b.sideLobePeak(n) * 0.99));
+  }
+  // The main lobe falls monotonically to its first null.
+  double previous = 1.0;
+  for (double t = 0.0; t < b.null(1); t += 1e-4) {
+    EXPECT_LE(b.power(t), previous + 1e-15);
+    previous = b.power(t);
+  }
+  EXPECT_THROW(b.halfAngleAt(0.0), Error);
 }
 
 }  // namespace
