@@ -117,7 +117,7 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
     noise_model = std::make_shared<const NoiseModel>(NoiseModel::load(params.noise_model));
   }
   const Detector detector(params.detector, noise_model, sonar);
-  if (detector.params().mode == "probability") {
+  if (detector.params().mode == DetectorMode::Probability) {
     carve.fusion = CarveParams::Fusion::LogOdds;
     carve.intensity_threshold = 0.0;
   }
@@ -133,7 +133,7 @@ ReconstructionResult reconstruct(const Mission& mission, const ReconstructionPar
   std::vector<double> carve_ms;
   std::unique_ptr<ReferenceCarver> reference;
   std::unique_ptr<FastCarver> fast;
-  if (params.engine == "reference") {
+  if (params.engine == Engine::Reference) {
     reference = std::make_unique<ReferenceCarver>(sonar, carve);
   } else {
     result.map = std::make_unique<VoxelMap>(carve.voxel_size_m, bounds);
