@@ -1,6 +1,7 @@
 // The parameter schema and the YAML it drives: every entry survives a round trip, and every
 // kind of bad file is refused with the file, the line and the key.
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <set>
@@ -184,6 +185,13 @@ TEST_F(ParamsYamlErrors, ChecksAcrossKeysPointAtALine) {
             at(2, "range_max_m") + "expected 0 (the sonar's) or above range_min_m");
   EXPECT_EQ(errorOf("detector:\n  mode: ztest\n"),
             at(2, "detector.mode") + "the ztest detector needs a noise model file (noise_model)");
+}
+
+TEST(ParamsYaml, ANodeOfALargerFileGivesThatFilesLines) {
+  // A GUI session embeds the parameters under `params:`.
+  const YAML::Node session = YAML::Load("format: session\nparams:\n  detector:\n    z: high\n");
+  test::expectError([&] { ReconstructionParams::fromYamlNode(session["params"], "s.sonarcarve"); },
+                    {"s.sonarcarve: line 4: detector.z: expected a number, got 'high'"});
 }
 
 TEST(ParamsYaml, ReadsTheFlowStyleOfEarlierVersions) {
