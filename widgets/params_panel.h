@@ -1,21 +1,27 @@
-// ParamsPanel: the reconstruction parameters an analyst tunes (detector and its threshold,
-// carving, frame selection, surface extraction), filling the same ReconstructionParams struct
-// the CLI reads from YAML. Edits are reported once the user pauses (`kSettle_ms`), so that
-// dragging a spin box re-runs the reconstruction once, not at every step. GUI thread only.
+// ParamsPanel: the reconstruction parameters an analyst tunes, filling the same
+// ReconstructionParams struct the CLI reads from YAML. Its group boxes and editors are built
+// from the parameter schema (pipeline/param_schema.h): the entries analysts tune are shown,
+// the rest under "More parameters". Edits are reported once the user pauses (`kSettle_ms`), so
+// that dragging a spin box re-runs the reconstruction once, not at every step. GUI thread only.
 #pragma once
 
 #include <QTimer>
 #include <QWidget>
+#include <memory>
+#include <string_view>
+#include <vector>
 
 #include "pipeline/reconstruction_params.h"
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
-class QLineEdit;
-class QSpinBox;
+class QFormLayout;
+class QGroupBox;
 
 namespace sonarcarve::widgets {
+
+class ParamEditor;
 
 class ParamsPanel : public QWidget {
   Q_OBJECT
@@ -23,43 +29,42 @@ class ParamsPanel : public QWidget {
   static constexpr int kSettle_ms = 350;
 
   explicit ParamsPanel(QWidget* parent = nullptr);
+  ~ParamsPanel() override;
   /// Shows `params` without emitting paramsEdited.
   void setParams(const ReconstructionParams& params);
-  /// The shown values on top of the last params set (keeps what the panel does not show,
-  /// such as the region of interest and the mesh settings).
+  /// The values the user changed on top of the last params set: a value not edited keeps its
+  /// exact value, whatever the editor's decimals.
   ReconstructionParams params() const;
 
-  // The editors, for tests and for keyboard users' buddies.
-  QComboBox* detectorMode() const { return detector_mode_; }
-  QDoubleSpinBox* voxelSize() const { return voxel_size_cm_; }
-  QDoubleSpinBox* zThreshold() const { return z_; }
+  /// The editor of a schema entry by its YAML key ("detector.z"), for tests and buddies.
+  QWidget* editor(std::string_view key) const;
+  QComboBox* detectorMode() const;
+  QDoubleSpinBox* voxelSize() const;  ///< in cm
+  QDoubleSpinBox* zThreshold() const;
+  /// Shows the entries not shown by default.
+  QCheckBox* moreParameters() const { return more_; }
 
  signals:
   /// The user changed a value and paused.
   void paramsEdited();
 
  private:
+  struct Row {
+    std::unique_ptr<ParamEditor> editor;
+    QFormLayout* form = nullptr;
+    std::string shown;  ///< the value setParams showed, as text, to tell edits apart
+  };
+
   void edited();
   void updateEnabled();
+  void showAdvanced(bool show);
 
   ReconstructionParams base_;
   QTimer settle_;
-  QComboBox* detector_mode_ = nullptr;
-  QDoubleSpinBox* z_ = nullptr;
-  QDoubleSpinBox* cfar_pfa_ = nullptr;
-  QSpinBox* smoothing_ = nullptr;
-  QLineEdit* noise_model_ = nullptr;
-  QDoubleSpinBox* threshold_ = nullptr;
-  QDoubleSpinBox* voxel_size_cm_ = nullptr;
-  QDoubleSpinBox* elevation_step_deg_ = nullptr;
-  QDoubleSpinBox* aperture_deg_ = nullptr;
-  QDoubleSpinBox* range_min_m_ = nullptr;
-  QDoubleSpinBox* range_max_m_ = nullptr;
-  QSpinBox* first_frame_ = nullptr;
-  QSpinBox* last_frame_ = nullptr;
-  QSpinBox* stride_ = nullptr;
-  QSpinBox* min_views_ = nullptr;
-  QCheckBox* mesh_ = nullptr;
+  std::vector<Row> rows_;  // one per schema entry, in schema order
+  std::vector<QGroupBox*> groups_;
+  QCheckBox* more_ = nullptr;
+  bool showing_ = false;  // setParams is filling the editors: not an edit
 };
 
 }  // namespace sonarcarve::widgets

@@ -18,5 +18,6 @@ void addEvaluateCommand(CLI::App& app, ThreadPool& pool, int& exit_code);
 void addNoiseModelCommand(CLI::App& app, int& exit_code);
 void addExportCommand(CLI::App& app, int& exit_code);
 void addImportCommand(CLI::App& app, int& exit_code);
+void addParamsCommand(CLI::App& app, int& exit_code);
 
 }  // namespace sonarcarve::cli

@@ -70,7 +70,7 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
     }
     if (!o->detected.empty()) {
       DetectorParams params;
-      params.mode = "ztest";
+      params.mode = DetectorMode::ZTest;
       params.z = o->z;
       params.smoothing = o->smoothing;
       const Detector detector(params,

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   sonarcarve::cli::addFrameCommand(app, exit_code);
   sonarcarve::cli::addSimulateCommand(app, pool, exit_code);
   sonarcarve::cli::addReconstructCommand(app, pool, exit_code);
+  sonarcarve::cli::addParamsCommand(app, exit_code);
   sonarcarve::cli::addEvaluateCommand(app, pool, exit_code);
   sonarcarve::cli::addExportCommand(app, exit_code);
   sonarcarve::cli::addNoiseModelCommand(app, exit_code);

@@ -8,9 +8,9 @@
 
 #include "carve/occupancy_export.h"
 #include "cli/commands.h"
+#include "cli/param_flags.h"
 #include "cli/source_flags.h"
 #include "cli/terminal_progress.h"
-#include "common/angles.h"
 #include "common/error.h"
 #include "io/atomic_file.h"
 #include "io/frame_source.h"
@@ -26,62 +26,16 @@ struct ReconstructOptions {
   std::string mission;
   std::string out;
   std::string params_file;
-  std::string engine;
-  double voxel_size_m = -1.0;
-  double threshold = -1.0;
-  double elevation_step_deg = -1.0;
-  int stride = -1;
-  int min_views = -1;
-  std::string noise_model;
-  std::string detector;
-  double z = -1.0;
-  double cfar_pfa = -1.0;
-  int smoothing = -1;
-  std::vector<double> region;
+  std::shared_ptr<ParamFlags> flags;
   SourceFlags source;
 };
 
+// The --params file (or the defaults), then the flags on top.
 ReconstructionParams paramsFrom(const ReconstructOptions& o) {
   ReconstructionParams p = o.params_file.empty()
                                ? ReconstructionParams{}
                                : ReconstructionParams::fromYamlFile(o.params_file);
-  if (!o.engine.empty()) {
-    p.engine = o.engine;
-  }
-  if (o.voxel_size_m > 0.0) {
-    p.carve.voxel_size_m = o.voxel_size_m;
-  }
-  if (o.threshold >= 0.0) {
-    p.carve.intensity_threshold = o.threshold;
-  }
-  if (o.elevation_step_deg > 0.0) {
-    p.carve.elevation_step_rad = degToRad(o.elevation_step_deg);
-  }
-  if (!o.noise_model.empty()) {
-    p.noise_model = o.noise_model;
-  }
-  if (!o.detector.empty()) {
-    p.detector.mode = o.detector;
-  }
-  if (o.z > 0.0) {
-    p.detector.z = o.z;
-  }
-  if (o.smoothing > 0) {
-    p.detector.smoothing = o.smoothing;
-  }
-  if (o.cfar_pfa > 0.0) {
-    p.detector.cfar_pfa = o.cfar_pfa;
-  }
-  if (o.min_views > 0) {
-    p.min_views = static_cast<std::uint32_t>(o.min_views);
-  }
-  if (o.stride > 0) {
-    p.stride = static_cast<std::size_t>(o.stride);
-  }
-  if (!o.region.empty()) {
-    p.carve.region = Eigen::AlignedBox3d(Eigen::Vector3d(o.region[0], o.region[1], o.region[2]),
-                                         Eigen::Vector3d(o.region[3], o.region[4], o.region[5]));
-  }
+  applyParamFlags(*o.flags, p);
   p.validate();
   return p;
 }
@@ -131,24 +85,7 @@ void addReconstructCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   cmd->add_option("--out", o->out, "Output folder")->required();
   cmd->add_option("--params", o->params_file,
                   "Parameters YAML (as saved by the GUI or params.yaml)");
-  cmd->add_option("--engine", o->engine, "fast | reference (the paper's arcs, slow)");
-  cmd->add_option("--voxel-size", o->voxel_size_m, "Voxel size, m (default 0.02)");
-  cmd->add_option("--threshold", o->threshold,
-                  "Intensity at or below which a pixel is empty water");
-  cmd->add_option("--elevation-step", o->elevation_step_deg, "Elevation step, deg (default 0.2)");
-  cmd->add_option("--stride", o->stride, "Use every n-th frame");
-  cmd->add_option("--noise-model", o->noise_model,
-                  "Noise model (sonarcarve-cli noise-model --smoothing 3)");
-  cmd->add_option("--detector", o->detector,
-                  "auto (ztest with the noise model given, else one learned from the mission's own "
-                  "frames) | none | ztest | cfar | probability");
-  cmd->add_option("--z", o->z, "Z-test threshold in standard deviations (default 2)");
-  cmd->add_option("--cfar-pfa", o->cfar_pfa, "CFAR false-alarm probability (default 0.05)");
-  cmd->add_option("--smoothing", o->smoothing,
-                  "Detector's box filter side (odd, default 3, 1 = none)");
-  cmd->add_option("--min-views", o->min_views,
-                  "Keep surface voxels that are the first return in at least this many views");
-  cmd->add_option("--region", o->region, "Region of interest: N0 E0 D0 N1 E1 D1 (m)")->expected(6);
+  o->flags = addParamFlags(*cmd);
   addSourceFlags(*cmd, o->source);
   cmd->callback([o, &pool, &exit_code] { exit_code = runReconstruct(*o, pool); });
 }

@@ -490,7 +490,7 @@ void MainWindow::showFrame(int index) {
         shown.range = widgets::displayRange(frame.image);
         if (detector) {
           shown.denoised = detector->apply(frame.image);
-          shown.probability = detector->params().mode == "probability";
+          shown.probability = detector->params().mode == DetectorMode::Probability;
         }
         return shown;
       },

@@ -78,7 +78,7 @@ Session loadSession(const std::filesystem::path& file) {
         f.positive(f.child(camera, "camera", "view_angle_deg"), "camera.view_angle_deg");
   }
   if (const YAML::Node params = root["params"]) {
-    s.params = ReconstructionParams::fromYamlText(YAML::Dump(params), file.string());
+    s.params = ReconstructionParams::fromYamlNode(params, file.string());
   }
   return s;
 }

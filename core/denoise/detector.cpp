@@ -9,15 +9,14 @@ namespace sonarcarve {
 
 DetectorParams DetectorParams::resolved(bool have_noise_model) const {
   DetectorParams p = *this;
-  if (p.mode == "auto") {
-    p.mode = have_noise_model ? "ztest" : "none";
+  if (p.mode == DetectorMode::Auto) {
+    p.mode = have_noise_model ? DetectorMode::ZTest : DetectorMode::None;
   }
   return p;
 }
 
 void DetectorParams::validate() const {
-  if (mode != "auto" && mode != "none" && mode != "ztest" && mode != "cfar" &&
-      mode != "probability") {
+  if (!hasName(mode)) {
     throw Error("parameters", "detector.mode", "expected auto, none, ztest, cfar or probability");
   }
   if (smoothing < 1 || smoothing % 2 == 0) {
@@ -37,7 +36,7 @@ Detector::Detector(DetectorParams params, std::shared_ptr<const NoiseModel> mode
   params_.validate();
   if (params_.needsNoiseModel()) {
     if (!model_) {
-      throw Error("parameters", "detector." + params_.mode,
+      throw Error("parameters", "detector." + std::string(toString(params_.mode)),
                   "needs a noise model (sonarcarve-cli noise-model EMPTY_WATER_MISSION)");
     }
     model_->checkGeometry(sonar, "detector");
@@ -52,13 +51,13 @@ Detector::Detector(DetectorParams params, std::shared_ptr<const NoiseModel> mode
 }
 
 cv::Mat Detector::apply(const cv::Mat& image) const {
-  if (params_.mode == "ztest") {
+  if (params_.mode == DetectorMode::ZTest) {
     return zTest(image);
   }
-  if (params_.mode == "cfar") {
+  if (params_.mode == DetectorMode::Cfar) {
     return cfar(image);
   }
-  if (params_.mode == "probability") {
+  if (params_.mode == DetectorMode::Probability) {
     return probability(image);
   }
   return image;

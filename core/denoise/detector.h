@@ -16,9 +16,23 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "common/enum_names.h"
 #include "denoise/noise_model.h"
 
 namespace sonarcarve {
+
+/// auto: ztest when a noise model is given, none otherwise.
+enum class DetectorMode { Auto, None, ZTest, Cfar, Probability };
+inline constexpr std::array<EnumName<DetectorMode>, 5> kDetectorModeNames{{
+    {DetectorMode::Auto, "auto"},
+    {DetectorMode::None, "none"},
+    {DetectorMode::ZTest, "ztest"},
+    {DetectorMode::Cfar, "cfar"},
+    {DetectorMode::Probability, "probability"},
+}};
+constexpr const auto& enumNamesOf(DetectorMode) {
+  return kDetectorModeNames;
+}
 
 struct DetectorParams {
   // Defaults measured on the noisy riser demo (docs/denoising.md): with a 3 x 3 box filter,
@@ -27,9 +41,7 @@ struct DetectorParams {
   // surfaces wherever one view's speckle dips.
   static constexpr double kDefaultZ = 2.0;
   static constexpr int kDefaultSmoothing = 3;
-  /// auto | none | ztest | cfar | probability. auto: ztest when a noise model is given,
-  /// none otherwise.
-  std::string mode = "auto";
+  DetectorMode mode = DetectorMode::Auto;
   double z = kDefaultZ;
   int cfar_guard = 3;      ///< cells on each side of the cell under test, skipped
   int cfar_train = 12;     ///< cells on each side beyond the guard, averaged
@@ -39,7 +51,9 @@ struct DetectorParams {
   /// have been learned with the same smoothing. The kept intensity is the original pixel's.
   int smoothing = kDefaultSmoothing;
 
-  bool needsNoiseModel() const { return mode == "ztest" || mode == "probability"; }
+  bool needsNoiseModel() const {
+    return mode == DetectorMode::ZTest || mode == DetectorMode::Probability;
+  }
   /// `auto` made concrete for whether a noise model is available.
   DetectorParams resolved(bool have_noise_model) const;
   /// Throws Error on an unknown mode or a value out of range.

@@ -115,11 +115,12 @@ NoiseModel learnNoiseFromMission(const Mission& mission, const std::vector<std::
     }
     progress.report("noise model", k + 1, wanted);
   }
-  if (images.size() < 8) {
+  if (images.size() < kMinNoiseFrames) {
     throw Error(mission.folder.string(), "noise model",
-                "only " + std::to_string(images.size()) +
-                    " frames could be read: at least 8 are needed to learn the noise from the "
-                    "mission itself; give an empty-water noise model (--noise-model)");
+                "only " + std::to_string(images.size()) + " frames could be read: at least " +
+                    std::to_string(kMinNoiseFrames) +
+                    " are needed to learn the noise from the mission itself; give an "
+                    "empty-water noise model (--noise-model)");
   }
 
   cv::Mat mean(rows, cols, CV_32F), stddev(rows, cols, CV_32F);

@@ -32,9 +32,14 @@ struct MissionNoiseStats {
   bool has_background() const { return background_median > 0.0; }
 };
 
+/// Fewest frames a model is learned from: a pixel's median and quartiles need three samples;
+/// with fewer than about ten the clipping is coarse and the background's fitted shape does
+/// most of the work.
+inline constexpr std::size_t kMinNoiseFrames = 3;
+
 /// Learns from at most `max_frames` of `frames` (indices into the mission, spread evenly),
 /// smoothed with a box of side `smoothing` as the detector will. Broken frames are skipped.
-/// Throws Error if fewer than 8 frames load (too few to separate structure from noise), and
+/// Throws Error if fewer than kMinNoiseFrames frames load, and
 /// Cancelled if `progress` asks to stop.
 NoiseModel learnNoiseFromMission(const Mission& mission, const std::vector<std::size_t>& frames,
                                  int smoothing, Progress& progress,

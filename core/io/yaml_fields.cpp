@@ -116,10 +116,13 @@ std::string shortestNumber(double value) {
 namespace sonarcarve {
 std::string shortestDegrees(double angle_rad) {
   const double deg = radToDeg(angle_rad);
-  for (int precision = 1; precision <= 17; ++precision) {
+  // From one degree up, plain decimals ("100", not general's "1e+02"); below, general, which
+  // writes tiny angles as "1e-05".
+  const bool fixed = std::abs(deg) >= 1.0;
+  const auto format = fixed ? std::chars_format::fixed : std::chars_format::general;
+  for (int precision = fixed ? 0 : 1; precision <= 17; ++precision) {
     char buffer[64];
-    const auto result =
-        std::to_chars(buffer, buffer + sizeof(buffer), deg, std::chars_format::general, precision);
+    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), deg, format, precision);
     std::string text(buffer, result.ptr);
     double back = 0.0;
     std::from_chars(text.data(), text.data() + text.size(), back);

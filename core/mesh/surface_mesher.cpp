@@ -117,7 +117,7 @@ vtkSmartPointer<vtkPolyData> occupancySurface(const SurfacePoints& points,
 }  // namespace
 
 void MeshParams::validate() const {
-  if (method != "implicit" && method != "occupancy") {
+  if (!hasName(method)) {
     throw Error("parameters", "mesh.method", "expected implicit or occupancy");
   }
   if (!(voxel_size_m > 0.0) || !(max_distance_voxels > 0.0)) {
@@ -135,7 +135,7 @@ Mesh meshSurface(const SurfacePoints& points, const MeshParams& params) {
                 "too few surface points to mesh (" + std::to_string(points.size()) + ")");
   }
   const auto cloud = pointCloud(points);
-  vtkSmartPointer<vtkPolyData> surface = params.method == "implicit"
+  vtkSmartPointer<vtkPolyData> surface = params.method == MeshMethod::Implicit
                                              ? implicitSurface(cloud, params)
                                              : occupancySurface(points, params);
   auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();

@@ -16,13 +16,23 @@
 #include <string>
 #include <vector>
 
+#include "common/enum_names.h"
 #include "occlusion/surface_points.h"
 
 namespace sonarcarve {
 
+enum class MeshMethod { Occupancy, Implicit };
+inline constexpr std::array<EnumName<MeshMethod>, 2> kMeshMethodNames{{
+    {MeshMethod::Occupancy, "occupancy"},
+    {MeshMethod::Implicit, "implicit"},
+}};
+constexpr const auto& enumNamesOf(MeshMethod) {
+  return kMeshMethodNames;
+}
+
 struct MeshParams {
-  std::string method = "occupancy";  ///< occupancy | implicit
-  double voxel_size_m = 0.02;        ///< sampling of the implicit function
+  MeshMethod method = MeshMethod::Occupancy;
+  double voxel_size_m = 0.02;  ///< sampling of the implicit function
   double max_distance_voxels = 2.0;
   std::size_t min_fragment_triangles = 200;
   int smoothing_iterations = 15;  ///< windowed sinc; 0 = none

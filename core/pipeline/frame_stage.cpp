@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
+#include "common/error.h"
 #include "denoise/mission_noise_model.h"
 
 namespace sonarcarve {
@@ -44,9 +46,10 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
     return choice;
   }
   choice.detector = detector.resolved(false);
-  if (detector.mode != "auto") {
-    choice.reason = detector.mode == "none" ? "no denoising (detector none)"
-                                            : "detector " + detector.mode + ", no noise model";
+  if (detector.mode != DetectorMode::Auto) {
+    choice.reason = detector.mode == DetectorMode::None
+                        ? "no denoising (detector none)"
+                        : "detector " + std::string(toString(detector.mode)) + ", no noise model";
     return choice;
   }
   std::vector<std::size_t> indices;
@@ -54,13 +57,18 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
     indices.push_back(f.index);
   }
   MissionNoiseStats stats;
-  NoiseModel learned =
-      learnNoiseFromMission(mission, indices, detector.smoothing, progress, &stats);
+  std::optional<NoiseModel> learned;
+  try {
+    learned = learnNoiseFromMission(mission, indices, detector.smoothing, progress, &stats);
+  } catch (const Error& e) {
+    choice.reason = "no denoising: " + std::string(e.message());
+    return choice;
+  }
   if (!stats.has_background()) {
     choice.reason = "no denoising: the frames carry no background noise (noise-free)";
     return choice;
   }
-  choice.model = std::make_shared<const NoiseModel>(std::move(learned));
+  choice.model = std::make_shared<const NoiseModel>(std::move(*learned));
   choice.detector = detector.resolved(true);
   char structure[32];
   std::snprintf(structure, sizeof structure, "%.1f", 100.0 * stats.structure_fraction);
@@ -82,7 +90,7 @@ Frame DenoisedFrames::load(std::size_t index) const {
 }
 
 bool DenoisedFrames::probabilities() const {
-  return detector_->params().mode == "probability";
+  return detector_->params().mode == DetectorMode::Probability;
 }
 
 }  // namespace sonarcarve

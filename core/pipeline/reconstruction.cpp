@@ -22,13 +22,6 @@ SonarModel carvingSonar(const Mission& mission, const ReconstructionParams& para
              : mission.sonar;
 }
 
-CarverEngine engineOf(const ReconstructionParams& params) {
-  if (const auto engine = carverEngineFromName(params.engine)) {
-    return *engine;
-  }
-  throw Error("parameters", "engine", "no carving engine named '" + params.engine + "'");
-}
-
 const ReconstructionParams& validated(const ReconstructionParams& params) {
   params.validate();
   return params;
@@ -64,8 +57,8 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     throw Error(mission_.folder.string(), "", "no frame can be placed in the world");
   }
   // Denoise, then carve.
-  const CarveStage carving(
-      sonar_, {engineOf(params_), params_.carve, params_.occlusion_aware_carving}, pool_);
+  const CarveStage carving(sonar_, {params_.engine, params_.carve, params_.occlusion_aware_carving},
+                           pool_);
   carving.mapBounds(posed);  // a region outside every view is an error before any file is read
   NoiseChoice noise;
   try {
@@ -74,7 +67,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     result.cancelled = true;
     return result;
   }
-  result.detector = noise.detector.mode;
+  result.detector = std::string(toString(noise.detector.mode));
   result.denoising = noise.reason;
   const DenoisedFrames frames(mission_, sonar_, noise);
   std::optional<MapUpdateSink> updates;

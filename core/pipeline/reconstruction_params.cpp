@@ -1,140 +1,192 @@
+// ReconstructionParams to and from YAML, both walking the parameter schema (param_schema.h):
+// a key the schema does not know, a value of the wrong type or out of range stops the read
+// with the file, the line and the key.
 #include "pipeline/reconstruction_params.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "common/error.h"
 #include "io/yaml_fields.h"
+#include "pipeline/param_schema.h"
 
 namespace sonarcarve {
 
 namespace {
 
-// `path` names the document in errors and anchors a relative noise model path.
+std::string joined(const std::string& prefix, const std::string& key) {
+  return prefix.empty() ? key : prefix + "." + key;
+}
+
+// The keys one level below `prefix` ("" = the top), in schema order: what a mapping may hold.
+std::vector<std::string> keysBelow(const std::string& prefix) {
+  const std::string start = prefix.empty() ? "" : prefix + ".";
+  std::vector<std::string> keys;
+  for (const ParamSpec& spec : paramSchema()) {
+    const std::string key(spec.key);
+    if (key.compare(0, start.size(), start) != 0) {
+      continue;
+    }
+    const std::string next = key.substr(start.size(), key.find('.', start.size()) - start.size());
+    if (std::find(keys.begin(), keys.end(), next) == keys.end()) {
+      keys.push_back(next);
+    }
+  }
+  return keys;
+}
+
+std::string listed(const std::vector<std::string>& words) {
+  std::string text;
+  for (const std::string& w : words) {
+    text += (text.empty() ? "" : ", ") + w;
+  }
+  return text;
+}
+
+class ParamsReader {
+ public:
+  // `file` names the document in errors and anchors a relative noise model path.
+  ParamsReader(const YamlFields& fields, std::string file) : f_(fields), file_(std::move(file)) {}
+
+  void readMapping(const YAML::Node& map, const std::string& prefix, ReconstructionParams& p) {
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      const std::string key = joined(prefix, it->first.IsScalar() ? it->first.Scalar() : "?");
+      const std::vector<std::string> below = keysBelow(key);
+      if (const ParamSpec* spec = findParam(key)) {
+        readValue(*spec, it->second, p);
+      } else if (!below.empty()) {
+        if (!it->second.IsMap()) {
+          f_.fail(it->second, key, "expected a mapping of " + listed(below));
+        }
+        readMapping(it->second, key, p);
+      } else {
+        f_.fail(it->first, key, "unknown key; expected one of " + listed(keysBelow(prefix)));
+      }
+    }
+  }
+
+ private:
+  void readValue(const ParamSpec& spec, const YAML::Node& node, ReconstructionParams& p) const {
+    const std::string key(spec.key);
+    if (spec.type() == ParamType::Box) {
+      spec.set(p, readBox(spec, node));
+      return;
+    }
+    if (spec.type() == ParamType::Path && node.IsNull()) {
+      spec.set(p, std::string());
+      return;
+    }
+    if (!node.IsScalar()) {
+      f_.fail(node, key, "expected " + describeAccepted(spec));
+    }
+    ParsedValue parsed = parseParam(spec, node.Scalar());
+    if (!parsed.problem.empty()) {
+      f_.fail(node, key, parsed.problem);
+    }
+    if (spec.type() == ParamType::Path) {
+      parsed.value = relativeToFile(std::get<std::string>(parsed.value));
+    }
+    spec.set(p, parsed.value);
+  }
+
+  // {min_m: [n, e, d], max_m: [n, e, d]}, or null for none.
+  OptionalBox readBox(const ParamSpec& spec, const YAML::Node& node) const {
+    const std::string key(spec.key);
+    if (node.IsNull()) {
+      return std::nullopt;
+    }
+    if (!node.IsMap()) {
+      f_.fail(node, key, "expected {min_m: [N, E, D], max_m: [N, E, D]} or null");
+    }
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const std::string name = it->first.IsScalar() ? it->first.Scalar() : "?";
+      if (name != "min_m" && name != "max_m") {
+        f_.fail(it->first, joined(key, name), "unknown key; expected one of min_m, max_m");
+      }
+    }
+    const auto lo = f_.numbers(f_.child(node, key, "min_m"), key + ".min_m", 3);
+    const auto hi = f_.numbers(f_.child(node, key, "max_m"), key + ".max_m", 3);
+    const OptionalBox box = Eigen::AlignedBox3d(Eigen::Vector3d(lo[0], lo[1], lo[2]),
+                                                Eigen::Vector3d(hi[0], hi[1], hi[2]));
+    if (box->isEmpty()) {
+      f_.fail(node, key, "expected min_m below max_m on every axis");
+    }
+    return box;
+  }
+
+  std::string relativeToFile(const std::string& path) const {
+    std::filesystem::path model = path;
+    if (!path.empty() && model.is_relative()) {
+      model = std::filesystem::path(file_).parent_path() / model;
+    }
+    return model.string();
+  }
+
+  const YamlFields& f_;
+  std::string file_;
+};
+
+// The node at a dotted key, for the line of an error found after reading.
+YAML::Node nodeAt(YAML::Node node, const std::string& key) {
+  std::istringstream parts(key);
+  for (std::string part; std::getline(parts, part, '.');) {
+    if (!node.IsMap() || !node[part]) {
+      return YAML::Node(YAML::NodeType::Undefined);
+    }
+    node = node[part];
+  }
+  return node;
+}
+
 ReconstructionParams paramsFromYaml(const YAML::Node& root, const YamlFields& f,
                                     const std::string& path) {
   ReconstructionParams p;
-  if (root["engine"]) {
-    p.engine = f.text(root["engine"], "engine");
-    if (p.engine != "fast" && p.engine != "reference") {
-      f.fail(root["engine"], "engine", "expected 'fast' or 'reference'");
-    }
-  }
-  if (root["voxel_size_m"]) {
-    p.carve.voxel_size_m = f.positive(root["voxel_size_m"], "voxel_size_m");
-  }
-  if (root["intensity_threshold"]) {
-    p.carve.intensity_threshold = f.number(root["intensity_threshold"], "intensity_threshold");
-  }
-  if (root["elevation_step_deg"]) {
-    p.carve.elevation_step_rad =
-        degToRad(f.positive(root["elevation_step_deg"], "elevation_step_deg"));
-  }
-  if (root["vertical_aperture_deg"]) {
-    p.vertical_aperture_rad =
-        degToRad(f.number(root["vertical_aperture_deg"], "vertical_aperture_deg"));
-  }
-  if (root["range_min_m"]) {
-    p.carve.range_min_m = f.number(root["range_min_m"], "range_min_m");
-  }
-  if (root["range_max_m"]) {
-    p.carve.range_max_m = f.number(root["range_max_m"], "range_max_m");
-  }
-  if (const YAML::Node region = root["region"]) {
-    const auto lo = f.numbers(f.child(region, "region", "min_m"), "region.min_m", 3);
-    const auto hi = f.numbers(f.child(region, "region", "max_m"), "region.max_m", 3);
-    p.carve.region = Eigen::AlignedBox3d(Eigen::Vector3d(lo[0], lo[1], lo[2]),
-                                         Eigen::Vector3d(hi[0], hi[1], hi[2]));
-    if (p.carve.region->isEmpty()) {
-      f.fail(region, "region", "expected min_m below max_m on every axis");
-    }
-  }
-  if (const YAML::Node frames = root["frames"]) {
-    if (frames["first"]) {
-      p.first_frame = static_cast<std::size_t>(f.number(frames["first"], "frames.first"));
-    }
-    if (frames["last"]) {
-      p.last_frame = static_cast<long>(f.number(frames["last"], "frames.last"));
-    }
-    if (frames["stride"]) {
-      p.stride = static_cast<std::size_t>(f.positiveInt(frames["stride"], "frames.stride"));
-    }
-  }
-  if (root["occlusion_aware_carving"]) {
-    bool value = true;
-    if (!YAML::convert<bool>::decode(root["occlusion_aware_carving"], value)) {
-      f.fail(root["occlusion_aware_carving"], "occlusion_aware_carving", "expected true or false");
-    }
-    p.occlusion_aware_carving = value;
-  }
-  if (const YAML::Node d = root["detector"]) {
-    if (d["mode"]) {
-      p.detector.mode = f.text(d["mode"], "detector.mode");
-    }
-    if (d["z"]) {
-      p.detector.z = f.number(d["z"], "detector.z");
-    }
-    if (d["cfar_guard"]) {
-      p.detector.cfar_guard = static_cast<int>(f.number(d["cfar_guard"], "detector.cfar_guard"));
-    }
-    if (d["cfar_train"]) {
-      p.detector.cfar_train = f.positiveInt(d["cfar_train"], "detector.cfar_train");
-    }
-    if (d["cfar_pfa"]) {
-      p.detector.cfar_pfa = f.positive(d["cfar_pfa"], "detector.cfar_pfa");
-    }
-    if (d["smoothing"]) {
-      p.detector.smoothing = f.positiveInt(d["smoothing"], "detector.smoothing");
-    }
-    if (d["arc_prior"]) {
-      p.carve.arc_prior = f.number(d["arc_prior"], "detector.arc_prior");
-    }
-    if (d["carve_log_odds"]) {
-      p.carve.carve_log_odds = f.number(d["carve_log_odds"], "detector.carve_log_odds");
-    }
-  }
-  if (const YAML::Node m = root["mesh"]) {
-    if (m["enabled"]) {
-      p.mesh_enabled = m["enabled"].as<bool>();
-    }
-    if (m["method"]) {
-      p.mesh.method = f.text(m["method"], "mesh.method");
-    }
-    if (m["smoothing_iterations"]) {
-      p.mesh.smoothing_iterations =
-          static_cast<int>(f.number(m["smoothing_iterations"], "mesh.smoothing_iterations"));
-    }
-    if (m["occupancy_sigma_voxels"]) {
-      p.mesh.occupancy_sigma_voxels =
-          f.positive(m["occupancy_sigma_voxels"], "mesh.occupancy_sigma_voxels");
-    }
-    if (m["occupancy_iso"]) {
-      p.mesh.occupancy_iso = f.positive(m["occupancy_iso"], "mesh.occupancy_iso");
-    }
-    if (m["decimate"]) {
-      p.mesh.decimate = f.number(m["decimate"], "mesh.decimate");
-    }
-    if (m["min_fragment_triangles"]) {
-      p.mesh.min_fragment_triangles = static_cast<std::size_t>(
-          f.positiveInt(m["min_fragment_triangles"], "mesh.min_fragment_triangles"));
-    }
-  }
-  if (root["noise_model"]) {
-    std::filesystem::path model = f.text(root["noise_model"], "noise_model");
-    if (model.is_relative()) {
-      model = std::filesystem::path(path).parent_path() / model;
-    }
-    p.noise_model = model.string();
-  }
-  if (root["min_views"]) {
-    p.min_views = static_cast<std::uint32_t>(f.positiveInt(root["min_views"], "min_views"));
-  }
+  ParamsReader(f, path).readMapping(root, "", p);
   try {
     p.validate();
   } catch (const Error& e) {
+    // Checks across keys name a key; point at its line when the file has it.
+    const YAML::Node at = nodeAt(root, e.place());
+    if (at.IsDefined()) {
+      f.fail(at, e.place(), e.message());
+    }
     throw Error(path, e.place(), e.message());
   }
   return p;
+}
+
+// Written values: a path absolute (the file may be read from elsewhere) and quoted; a box in
+// flow style; every other value as a flag takes it.
+std::string yamlValue(const ParamSpec& spec, const ParamValue& value) {
+  if (spec.type() == ParamType::Path) {
+    const std::string& path = std::get<std::string>(value);
+    return YAML::Dump(YAML::Node(path.empty() ? path : std::filesystem::absolute(path).string()));
+  }
+  if (spec.type() == ParamType::Box) {
+    const OptionalBox& box = std::get<OptionalBox>(value);
+    if (!box) {
+      return "null";
+    }
+    const auto corner = [](const Eigen::Vector3d& v) {
+      return "[" + shortestNumber(v.x()) + ", " + shortestNumber(v.y()) + ", " +
+             shortestNumber(v.z()) + "]";
+    };
+    return "{min_m: " + corner(box->min()) + ", max_m: " + corner(box->max()) + "}";
+  }
+  return formatParam(spec, value);
+}
+
+void writeEntry(std::ostream& out, const std::string& indent, const std::string& key,
+                const ParamSpec& spec, const ReconstructionParams& p) {
+  std::string line = indent + key + ": " + yamlValue(spec, spec.get(p));
+  line.resize(std::max<std::size_t>(line.size() + 2, 36), ' ');
+  const std::string unit = spec.unit.empty() ? "" : std::string(spec.unit) + "; ";
+  const std::string accepted = spec.type() == ParamType::Box
+                                   ? "null or {min_m: [N, E, D], max_m: [N, E, D]}"
+                                   : describeAccepted(spec);
+  out << line << "# " << unit << accepted << "\n";
 }
 
 }  // namespace
@@ -150,70 +202,57 @@ ReconstructionParams ReconstructionParams::fromYamlText(const std::string& text,
   return paramsFromYaml(f.parse(text), f, source);
 }
 
+ReconstructionParams ReconstructionParams::fromYamlNode(const YAML::Node& node,
+                                                        const std::string& source) {
+  const YamlFields f(source);
+  if (!node.IsMap()) {
+    f.fail(node, "params", "expected a mapping of parameters");
+  }
+  return paramsFromYaml(node, f, source);
+}
+
 void ReconstructionParams::validate() const {
-  if (engine != "fast" && engine != "reference") {
-    throw Error("parameters", "engine", "expected 'fast' or 'reference'");
+  for (const ParamSpec& spec : paramSchema()) {
+    const std::string problem = checkParam(spec, spec.get(*this));
+    if (!problem.empty()) {
+      throw Error("parameters", std::string(spec.key), problem);
+    }
   }
-  if (!(carve.voxel_size_m > 0.0)) {
-    throw Error("parameters", "voxel_size_m", "expected a positive voxel size");
-  }
-  if (!(carve.elevation_step_rad > 0.0)) {
-    throw Error("parameters", "elevation_step_deg", "expected a positive elevation step");
-  }
-  if (carve.range_min_m < 0.0 || carve.range_max_m < 0.0 ||
-      (carve.range_max_m > 0.0 && carve.range_max_m <= carve.range_min_m)) {
-    throw Error("parameters", "range_min_m/range_max_m", "expected 0 <= min < max (0 = sonar's)");
-  }
-  if (!(vertical_aperture_rad >= 0.0) || vertical_aperture_rad >= degToRad(180.0)) {
-    throw Error("parameters", "vertical_aperture_deg",
-                "expected 0 (the sonar's own) or an aperture below 180 degrees");
+  if (carve.range_max_m > 0.0 && carve.range_max_m <= carve.range_min_m) {
+    throw Error("parameters", "range_max_m", "expected 0 (the sonar's) or above range_min_m");
   }
   detector.validate();
   mesh.validate();
   if (detector.needsNoiseModel() && noise_model.empty()) {
-    throw Error("parameters", "noise_model",
-                "the " + detector.mode + " detector needs a noise model file");
-  }
-  if (stride < 1) {
-    throw Error("parameters", "frames.stride", "expected a stride of at least 1");
+    throw Error("parameters", "detector.mode",
+                "the " + std::string(toString(detector.mode)) +
+                    " detector needs a noise model file (noise_model)");
   }
 }
 
 std::string ReconstructionParams::toYaml() const {
   std::ostringstream out;
-  out << "# SonarCarve reconstruction parameters (docs: sonarcarve-cli reconstruct --help)\n"
-      << "engine: " << engine << "\n"
-      << "voxel_size_m: " << shortestNumber(carve.voxel_size_m) << "\n"
-      << "intensity_threshold: " << shortestNumber(carve.intensity_threshold) << "\n"
-      << "elevation_step_deg: " << shortestDegrees(carve.elevation_step_rad) << "\n"
-      << "range_min_m: " << shortestNumber(carve.range_min_m) << "\n"
-      << "range_max_m: " << shortestNumber(carve.range_max_m) << "\n"
-      << "vertical_aperture_deg: " << shortestDegrees(vertical_aperture_rad) << "\n";
-  if (carve.region) {
-    const auto& lo = carve.region->min();
-    const auto& hi = carve.region->max();
-    out << "region:\n"
-        << "  min_m: [" << shortestNumber(lo.x()) << ", " << shortestNumber(lo.y()) << ", "
-        << shortestNumber(lo.z()) << "]\n"
-        << "  max_m: [" << shortestNumber(hi.x()) << ", " << shortestNumber(hi.y()) << ", "
-        << shortestNumber(hi.z()) << "]\n";
-  }
-  out << "frames: {first: " << first_frame << ", last: " << last_frame << ", stride: " << stride
-      << "}\n"
-      << "min_views: " << min_views << "\n"
-      << "occlusion_aware_carving: " << (occlusion_aware_carving ? "true" : "false") << "\n"
-      << "detector: {mode: " << detector.mode << ", z: " << shortestNumber(detector.z)
-      << ", cfar_guard: " << detector.cfar_guard << ", cfar_train: " << detector.cfar_train
-      << ", cfar_pfa: " << shortestNumber(detector.cfar_pfa)
-      << ", arc_prior: " << shortestNumber(carve.arc_prior)
-      << ", carve_log_odds: " << shortestNumber(carve.carve_log_odds)
-      << ", smoothing: " << detector.smoothing << "}\n";
-  out << "mesh: {enabled: " << (mesh_enabled ? "true" : "false") << ", method: " << mesh.method
-      << ", smoothing_iterations: " << mesh.smoothing_iterations
-      << ", decimate: " << shortestNumber(mesh.decimate)
-      << ", min_fragment_triangles: " << mesh.min_fragment_triangles << "}\n";
-  if (!noise_model.empty()) {
-    out << "noise_model: " << std::filesystem::absolute(noise_model).string() << "\n";
+  out << "# SonarCarve reconstruction parameters (sonarcarve-cli params --markdown explains "
+         "each key)\n";
+  std::set<std::string> groups_written;
+  for (const ParamSpec& spec : paramSchema()) {
+    const std::string key(spec.key);
+    const std::size_t dot = key.find('.');
+    if (dot == std::string::npos) {
+      writeEntry(out, "", key, spec, *this);
+      continue;
+    }
+    const std::string group = key.substr(0, dot);
+    if (!groups_written.insert(group).second) {
+      continue;
+    }
+    out << group << ":\n";
+    for (const ParamSpec& member : paramSchema()) {
+      const std::string member_key(member.key);
+      if (member_key.compare(0, dot + 1, group + ".") == 0) {
+        writeEntry(out, "  ", member_key.substr(dot + 1), member, *this);
+      }
+    }
   }
   return out.str();
 }

@@ -1,29 +1,38 @@
 // ReconstructionParams: everything that decides a reconstruction, as one plain struct with
 // the seed paper's defaults, saved to and loaded from YAML so that a GUI session and a CLI run
-// with the same file give the same map. YAML keys (degrees at the file boundary):
-//   engine: fast | reference
-//   voxel_size_m, intensity_threshold, elevation_step_deg, range_min_m, range_max_m
-//   region: {min_m: [n, e, d], max_m: [n, e, d]}     (optional)
-//   frames: {first: 0, last: -1, stride: 1}          (last -1 = to the end)
-//   min_views, occlusion_aware_carving, vertical_aperture_deg (0 = the sonar's own)
-//   detector: {mode: none|ztest|cfar|probability, z, cfar_guard, cfar_train, cfar_pfa,
-//              arc_prior, carve_log_odds, smoothing}
-//   noise_model: PATH                                (relative to the YAML file's folder)
-//   mesh: {enabled, method: implicit|occupancy, smoothing_iterations, decimate,
-//          min_fragment_triangles}
+// with the same file give the same map. The YAML keys, their units (degrees at the file
+// boundary), ranges and help are in the parameter schema (param_schema.h), which the reader,
+// the writer, the CLI flags, the workbench's panel and the docs all follow.
 #pragma once
 
 #include <cstdint>
 #include <string>
 
 #include "carve/carve_params.h"
+#include "carve/carver.h"
+#include "common/enum_names.h"
 #include "denoise/detector.h"
 #include "mesh/surface_mesher.h"
 
+namespace YAML {
+class Node;
+}
+
 namespace sonarcarve {
 
+/// fast: voxel-centric and multi-threaded; reference: the seed paper's arcs in an OctoMap.
+/// The carving engine (carve/carver.h); YAML and the command line name the built-in ones.
+using Engine = CarverEngine;
+inline constexpr std::array<EnumName<Engine>, 2> kEngineNames{{
+    {Engine::Fast, "fast"},
+    {Engine::Reference, "reference"},
+}};
+constexpr const auto& enumNamesOf(Engine) {
+  return kEngineNames;
+}
+
 struct ReconstructionParams {
-  std::string engine = "fast";
+  Engine engine = Engine::Fast;
   CarveParams carve;
   DetectorParams detector;
   /// Surface mesh from the surface points (voxel_size_m follows carve.voxel_size_m).
@@ -49,13 +58,19 @@ struct ReconstructionParams {
   /// whose aperture covers it (about 15 for the paper's 10 cm steps at 4.5 m).
   static constexpr std::uint32_t kDefaultMinViews = 5;
 
+  /// The detector that runs: `auto` made concrete by whether a noise model is given.
+  DetectorMode resolvedDetectorMode() const { return detector.resolved(!noise_model.empty()).mode; }
+
   /// Throws Error naming the file, line and key on a bad value; absent keys keep defaults.
   static ReconstructionParams fromYamlFile(const std::string& path);
   /// The same from YAML text embedded in another file (a GUI session); `source` names that
   /// file in errors and anchors a relative noise model path.
   static ReconstructionParams fromYamlText(const std::string& text, const std::string& source);
+  /// The same from a node of a document already parsed, so that errors give its lines.
+  static ReconstructionParams fromYamlNode(const YAML::Node& node, const std::string& source);
   std::string toYaml() const;
-  /// Throws Error if a value is out of range.
+  /// Throws Error naming the key if a value is out of range (the schema's ranges) or two
+  /// values contradict each other.
   void validate() const;
 };
 

@@ -12,7 +12,7 @@ namespace sonarcarve {
 std::string reconstructionReport(const Mission& mission, const ReconstructionParams& params,
                                  const ReconstructionResult& result, ThreadPool& pool) {
   nlohmann::json report = {{"mission", mission.folder.string()},
-                           {"engine", params.engine},
+                           {"engine", std::string(toString(params.engine))},
                            {"detector", result.detector},
                            {"denoising", result.denoising},
                            {"smoothing", params.detector.smoothing},

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSignalSpy>
@@ -13,6 +14,7 @@
 #include "fan_view.h"
 #include "frame_timeline.h"
 #include "params_panel.h"
+#include "pipeline/param_schema.h"
 #include "support/test_support.h"
 
 namespace sonarcarve::widgets {
@@ -87,7 +89,7 @@ TEST_F(Widgets, TimelineStepsAndPlaysToTheLastFrame) {
 TEST_F(Widgets, ParamsPanelFillsTheCliParamsAndReportsAnEditOnceSettled) {
   ParamsPanel panel;
   ReconstructionParams p;
-  p.detector.mode = "cfar";
+  p.detector.mode = DetectorMode::Cfar;
   p.carve.voxel_size_m = 0.03;
   p.vertical_aperture_rad = degToRad(14.0);
   p.carve.range_max_m = 8.5;
@@ -109,6 +111,27 @@ TEST_F(Widgets, ParamsPanelFillsTheCliParamsAndReportsAnEditOnceSettled) {
   EXPECT_EQ(edited.count(), 1);
   EXPECT_DOUBLE_EQ(panel.params().carve.voxel_size_m, 0.035);
   EXPECT_DOUBLE_EQ(panel.params().detector.z, 2.5);
+}
+
+TEST_F(Widgets, ParamsPanelHasAnEditorForEveryParameterOfTheSchema) {
+  ParamsPanel panel;
+  for (const ParamSpec& spec : paramSchema()) {
+    EXPECT_NE(panel.editor(spec.key), nullptr) << spec.key;
+  }
+  // The usual entries show; the others after "More parameters".
+  EXPECT_TRUE(panel.zThreshold()->isVisibleTo(&panel));
+  EXPECT_FALSE(panel.editor("mesh.decimate")->isVisibleTo(&panel));
+  panel.moreParameters()->setChecked(true);
+  EXPECT_TRUE(panel.editor("mesh.decimate")->isVisibleTo(&panel));
+  auto* decimate = qobject_cast<QDoubleSpinBox*>(panel.editor("mesh.decimate"));
+  ASSERT_NE(decimate, nullptr);
+  decimate->setValue(0.5);
+  EXPECT_DOUBLE_EQ(panel.params().mesh.decimate, 0.5);
+  // Entries that do not apply are greyed out: CFAR's without the CFAR detector.
+  EXPECT_FALSE(panel.editor("detector.cfar_pfa")->isEnabled());
+  panel.detectorMode()->setCurrentText("cfar");
+  EXPECT_TRUE(panel.editor("detector.cfar_pfa")->isEnabled());
+  EXPECT_EQ(panel.params().detector.mode, DetectorMode::Cfar);
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ TEST(ZTest, FalseAlarmRateOnGaussianNoiseMatchesTheNormalTail) {
   }
   for (double z : {1.0, 2.0, 3.0}) {
     DetectorParams params;
-    params.mode = "ztest";
+    params.mode = DetectorMode::ZTest;
     params.z = z;
     params.smoothing = 1;
     const Detector detector(params, gaussianModel(sonar), sonar);
@@ -58,7 +58,7 @@ TEST(ZTest, KeptPixelsKeepTheirIntensity) {
   cv::Mat image(sonar.rows(), sonar.cols(), CV_32F, cv::Scalar(100.0f));
   image.at<float>(10, 20) = 250.0f;
   DetectorParams params;
-  params.mode = "ztest";
+  params.mode = DetectorMode::ZTest;
   params.smoothing = 1;
   const cv::Mat out = Detector(params, gaussianModel(sonar), sonar).apply(image);
   EXPECT_EQ(out.at<float>(10, 20), 250.0f);
@@ -75,7 +75,7 @@ TEST(Cfar, DetectsAPointTargetOfKnownSnrAndHoldsItsFalseAlarmRate) {
     *it = sigma * std::sqrt(-2.0f * std::log(1.0f - u(rng)));
   }
   DetectorParams params;
-  params.mode = "cfar";
+  params.mode = DetectorMode::Cfar;
   params.smoothing = 1;
   params.cfar_pfa = 1e-3;
   const Detector detector(params, nullptr, sonar);
@@ -124,7 +124,7 @@ TEST(NoiseModel, LearnsTheBackgroundOfEmptyWaterFrames) {
 TEST(NoiseModel, AModelOfAnotherGeometryIsRefusedWithAClearMessage) {
   const SonarModel sonar = smallSonar();
   DetectorParams params;
-  params.mode = "ztest";
+  params.mode = DetectorMode::ZTest;
   params.smoothing = 1;
   try {
     Detector(params, gaussianModel(smallSonar(300, 100)), sonar);
@@ -138,7 +138,7 @@ TEST(NoiseModel, AModelOfAnotherGeometryIsRefusedWithAClearMessage) {
   EXPECT_THROW(Detector(params, gaussianModel(wider), sonar), Error);
   params.smoothing = 3;  // the model was learned without smoothing
   EXPECT_THROW(Detector(params, gaussianModel(sonar), sonar), Error);
-  params.mode = "ztest";
+  params.mode = DetectorMode::ZTest;
   EXPECT_THROW(Detector(params, nullptr, sonar), Error);  // no model at all
 }
 

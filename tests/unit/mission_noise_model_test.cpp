@@ -105,10 +105,21 @@ TEST_F(MissionNoise, AutoLearnsFromTheMissionAndNeverChoosesNoneOnSpeckle) {
     frames.push_back({i, Eigen::Isometry3d::Identity()});
   DetectorParams detector;  // auto
   const NoiseChoice choice = chooseNoiseModel(riser, frames, detector, "", progress);
-  EXPECT_EQ(choice.detector.mode, "ztest");
+  EXPECT_EQ(choice.detector.mode, DetectorMode::ZTest);
   ASSERT_TRUE(choice.model);
   EXPECT_NE(choice.reason.find("learned from 24 of the mission's own frames"), std::string::npos)
       << choice.reason;
+}
+
+TEST_F(MissionNoise, TooFewFramesGiveNoDenoisingAndSayWhy) {
+  SilentProgress progress;
+  const std::vector<PosedFrame> two{{0, Eigen::Isometry3d::Identity()},
+                                    {1, Eigen::Isometry3d::Identity()}};
+  const NoiseChoice choice =
+      chooseNoiseModel(mission("riser"), two, DetectorParams{}, "", progress);
+  EXPECT_EQ(choice.detector.mode, DetectorMode::None);
+  EXPECT_NE(choice.reason.find("at least 3"), std::string::npos) << choice.reason;
+  EXPECT_NE(choice.reason.find("--noise-model"), std::string::npos) << choice.reason;
 }
 
 TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
@@ -123,7 +134,7 @@ TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
   for (std::size_t i = 0; i < 10; ++i)
     frames.push_back({i, Eigen::Isometry3d::Identity()});
   const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", progress);
-  EXPECT_EQ(choice.detector.mode, "none");
+  EXPECT_EQ(choice.detector.mode, DetectorMode::None);
   EXPECT_FALSE(choice.model);
   EXPECT_NE(choice.reason.find("noise-free"), std::string::npos) << choice.reason;
 }

@@ -100,7 +100,7 @@ class CarveStageTest : public ::testing::Test {
   }
   DetectorParams detector_ = [] {
     DetectorParams d;
-    d.mode = "none";
+    d.mode = DetectorMode::None;
     return d;
   }();
   ThreadPool pool_{2};

@@ -182,7 +182,7 @@ TEST_F(Pipeline, ApertureOverrideNarrowsWhatEachFrameCarves) {
 TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
   test::ScratchDir dir;
   ReconstructionParams p;
-  p.engine = "reference";
+  p.engine = Engine::Reference;
   p.carve.voxel_size_m = 0.03;
   p.carve.intensity_threshold = 12.5;
   p.carve.region = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -2, 3), Eigen::Vector3d(4, 5, 6));
@@ -192,7 +192,7 @@ TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
   test::writeText(dir.path() / "p.yaml", p.toYaml());
   const ReconstructionParams back =
       ReconstructionParams::fromYamlFile((dir.path() / "p.yaml").string());
-  EXPECT_EQ(back.engine, "reference");
+  EXPECT_EQ(back.engine, Engine::Reference);
   EXPECT_EQ(back.carve.voxel_size_m, 0.03);
   EXPECT_EQ(back.carve.intensity_threshold, 12.5);
   EXPECT_NEAR(back.carve.elevation_step_rad, p.carve.elevation_step_rad, 1e-15);

@@ -1,0 +1,433 @@
+#include "pipeline/param_schema.h"
+
+#include <type_traits>
+
+#include "common/angles.h"
+
+namespace sonarcarve {
+namespace {
+
+using Params = ReconstructionParams;
+
+// The ParamType of a field type that a ParamValue holds as it is.
+template <typename T>
+constexpr ParamType heldType() {
+  if constexpr (std::is_same_v<T, double>) {
+    return ParamType::Number;
+  } else if constexpr (std::is_same_v<T, bool>) {
+    return ParamType::Bool;
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    return ParamType::Path;
+  } else {
+    static_assert(std::is_same_v<T, OptionalBox>, "no ParamType for this field type");
+    return ParamType::Box;
+  }
+}
+
+// `ref` is a generic lambda returning a reference to the field, so that one lambda serves both
+// the const getter and the setter; the field's C++ type decides the entry's ParamType (an enum
+// is an Enum, with the names of its enum_names.h table).
+template <typename Ref>
+ParamAccess field(Ref ref) {
+  using T = std::remove_cvref_t<decltype(ref(std::declval<Params&>()))>;
+  ParamAccess a;
+  if constexpr (std::is_enum_v<T>) {
+    a.type = ParamType::Enum;
+    a.choices = enumNames<T>();
+    a.get = [ref](const Params& p) { return ParamValue(std::string(toString(ref(p)))); };
+    a.set = [ref](Params& p, const ParamValue& v) {
+      if (const auto value = enumFromString<T>(std::get<std::string>(v))) {
+        ref(p) = *value;
+      }
+    };
+  } else if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+    a.type = ParamType::Integer;
+    a.get = [ref](const Params& p) { return ParamValue(static_cast<long long>(ref(p))); };
+    a.set = [ref](Params& p, const ParamValue& v) {
+      ref(p) = static_cast<T>(std::get<long long>(v));
+    };
+  } else {
+    a.type = heldType<T>();
+    a.get = [ref](const Params& p) { return ParamValue(ref(p)); };
+    a.set = [ref](Params& p, const ParamValue& v) { ref(p) = std::get<T>(v); };
+  }
+  return a;
+}
+
+bool usesZTest(const Params& p) {
+  return p.resolvedDetectorMode() == DetectorMode::ZTest;
+}
+bool usesCfar(const Params& p) {
+  return p.resolvedDetectorMode() == DetectorMode::Cfar;
+}
+bool usesProbability(const Params& p) {
+  return p.resolvedDetectorMode() == DetectorMode::Probability;
+}
+bool usesDetector(const Params& p) {
+  return p.resolvedDetectorMode() != DetectorMode::None;
+}
+bool usesFastEngine(const Params& p) {
+  return p.engine == Engine::Fast;
+}
+bool buildsMesh(const Params& p) {
+  return p.mesh_enabled;
+}
+bool meshesOccupancy(const Params& p) {
+  return p.mesh_enabled && p.mesh.method == MeshMethod::Occupancy;
+}
+bool meshesImplicit(const Params& p) {
+  return p.mesh_enabled && p.mesh.method == MeshMethod::Implicit;
+}
+
+constexpr ParamRange kAny{};
+constexpr ParamRange kPositive{.min = 0.0, .min_open = true};
+constexpr ParamRange kNonNegative{.min = 0.0};
+constexpr ParamRange kAtLeastOne{.min = 1.0};
+
+// Designated initializers leave the fields they do not name at their defaults on purpose; GCC
+// 12 warns about each of them under -Wextra.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+std::vector<ParamSpec> makeSchema() {
+  return {
+      // Denoising: what the analyst tunes first.
+      {.key = "detector.mode",
+       .help = "what separates returns from noise before carving: auto (ztest with a noise "
+               "model, none without), none, ztest, cfar (needs no noise model) or probability "
+               "(experimental)",
+       .flag = "--detector",
+       .gui = {.group = "Denoising", .label = "Detector"},
+       .access = field([](auto& p) -> auto& { return p.detector.mode; })},
+      {.key = "detector.z",
+       .unit = "σ",
+       .help = "Z-test: a pixel is kept where its smoothed value exceeds the empty-water mean by "
+               "this many standard deviations",
+       .flag = "--z",
+       .gui = {.group = "Denoising",
+               .label = "Z threshold",
+               .min = 0.1,
+               .max = 20.0,
+               .step = 0.25,
+               .suffix = " σ"},
+       .access = field([](auto& p) -> auto& { return p.detector.z; }),
+       .applies = usesZTest},
+      {.key = "detector.cfar_pfa",
+       .range = {.min = 0.0, .max = 1.0, .min_open = true, .max_open = true},
+       .help = "CFAR: false-alarm probability per cell",
+       .flag = "--cfar-pfa",
+       .gui = {.group = "Denoising",
+               .label = "CFAR Pfa",
+               .min = 0.0001,
+               .max = 0.5,
+               .step = 0.01,
+               .decimals = 4},
+       .access = field([](auto& p) -> auto& { return p.detector.cfar_pfa; }),
+       .applies = usesCfar},
+      {.key = "detector.smoothing",
+       .unit = "pixels",
+       .odd = true,
+       .range = kAtLeastOne,
+       .help = "side of the box filter averaged before the test (1 = none); the noise model "
+               "must be learned with the same",
+       .flag = "--smoothing",
+       .gui = {.group = "Denoising", .label = "Smoothing", .min = 1, .max = 15, .step = 2},
+       .access = field([](auto& p) -> auto& { return p.detector.smoothing; }),
+       .applies = usesDetector},
+      {.key = "noise_model",
+       .help = "per-pixel empty-water statistics (sonarcarve-cli noise-model), needed by ztest "
+               "and probability; in a YAML file, relative to the file's folder",
+       .flag = "--noise-model",
+       .gui = {.group = "Denoising",
+               .label = "Noise model",
+               .min_text = "none (learn with sonarcarve-cli noise-model)"},
+       .access = field([](auto& p) -> auto& { return p.noise_model; })},
+      {.key = "detector.cfar_guard",
+       .unit = "range bins",
+       .range = kNonNegative,
+       .help = "CFAR: cells skipped on each side of the cell under test",
+       .flag = "--cfar-guard",
+       .gui = {.group = "Denoising", .label = "CFAR guard", .advanced = true, .max = 100},
+       .access = field([](auto& p) -> auto& { return p.detector.cfar_guard; }),
+       .applies = usesCfar},
+      {.key = "detector.cfar_train",
+       .unit = "range bins",
+       .range = kAtLeastOne,
+       .help = "CFAR: cells averaged on each side beyond the guard",
+       .flag = "--cfar-train",
+       .gui =
+           {.group = "Denoising", .label = "CFAR training", .advanced = true, .min = 1, .max = 500},
+       .access = field([](auto& p) -> auto& { return p.detector.cfar_train; }),
+       .applies = usesCfar},
+      {.key = "detector.arc_prior",
+       .unit = "log-odds",
+       .help = "probability detector: evidence subtracted per view (the prior that a voxel on a "
+               "lit arc is not the one that returned)",
+       .flag = "--arc-prior",
+       .gui = {.group = "Denoising",
+               .label = "Arc prior",
+               .advanced = true,
+               .min = -50,
+               .max = 50,
+               .step = 0.5},
+       .access = field([](auto& p) -> auto& { return p.carve.arc_prior; }),
+       .applies = usesProbability},
+      {.key = "detector.carve_log_odds",
+       .unit = "log-odds",
+       .help = "probability detector: a voxel whose summed evidence falls below this is carved "
+               "for good",
+       .flag = "--carve-log-odds",
+       .gui = {.group = "Denoising",
+               .label = "Carve log-odds",
+               .advanced = true,
+               .min = -50,
+               .max = 50,
+               .step = 0.5},
+       .access = field([](auto& p) -> auto& { return p.carve.carve_log_odds; }),
+       .applies = usesProbability},
+
+      // Carving.
+      {.key = "intensity_threshold",
+       .unit = "counts",
+       .help = "a pixel at or below this intensity (after the detector) is empty water and "
+               "carves its arc",
+       .flag = "--threshold",
+       .gui = {.group = "Carving",
+               .label = "Intensity threshold",
+               .max = 65535,
+               .step = 10,
+               .decimals = 1},
+       .access = field([](auto& p) -> auto& { return p.carve.intensity_threshold; })},
+      {.key = "voxel_size_m",
+       .unit = "m",
+       .range = kPositive,
+       .help = "edge of a map voxel; also the mesh's sampling",
+       .flag = "--voxel-size",
+       .gui = {.group = "Carving",
+               .label = "Voxel size",
+               .min = 0.5,
+               .max = 50,
+               .step = 0.5,
+               .decimals = 1,
+               .factor = 100,
+               .suffix = " cm"},
+       .access = field([](auto& p) -> auto& { return p.carve.voxel_size_m; })},
+      {.key = "elevation_step_deg",
+       .unit = "degrees",
+       .degrees = true,
+       .range = kPositive,
+       .help = "step along each pixel's elevation arc (reference engine) and in occlusion "
+               "resolution",
+       .flag = "--elevation-step",
+       .gui = {.group = "Carving",
+               .label = "Elevation step",
+               .min = 0.01,
+               .max = 5,
+               .step = 0.05,
+               .suffix = "°"},
+       .access = field([](auto& p) -> auto& { return p.carve.elevation_step_rad; })},
+      {.key = "vertical_aperture_deg",
+       .unit = "degrees",
+       .degrees = true,
+       .range = {.min = 0.0, .max = 180.0, .max_open = true},
+       .help = "vertical aperture used for carving; 0 = the sonar's own",
+       .flag = "--vertical-aperture",
+       .gui = {.group = "Carving",
+               .label = "Vertical aperture",
+               .max = 90,
+               .decimals = 1,
+               .suffix = "°",
+               .min_text = "sonar's own"},
+       .access = field([](auto& p) -> auto& { return p.vertical_aperture_rad; })},
+      {.key = "range_min_m",
+       .unit = "m",
+       .range = kNonNegative,
+       .help = "nearest range used; 0 = the sonar's own",
+       .flag = "--range-min",
+       .gui = {.group = "Carving", .label = "Range min", .max = 500, .step = 0.1, .suffix = " m"},
+       .access = field([](auto& p) -> auto& { return p.carve.range_min_m; })},
+      {.key = "range_max_m",
+       .unit = "m",
+       .range = kNonNegative,
+       .help = "farthest range used, above range_min_m; 0 = the sonar's own",
+       .flag = "--range-max",
+       .gui = {.group = "Carving",
+               .label = "Range max",
+               .max = 500,
+               .step = 0.5,
+               .suffix = " m",
+               .min_text = "sonar's own"},
+       .access = field([](auto& p) -> auto& { return p.carve.range_max_m; })},
+      {.key = "engine",
+       .help = "fast: voxel-centric, multi-threaded; reference: the seed paper's arcs in an "
+               "OctoMap, about 3 s a frame (use a region)",
+       .flag = "--engine",
+       .gui = {.group = "Carving", .label = "Engine", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.engine; })},
+      {.key = "region",
+       .unit = "m",
+       .help = "only this box of the world (NED) is mapped; unset: everything the frames see",
+       .flag = "--region",
+       .gui = {.group = "Carving",
+               .label = "Region",
+               .advanced = true,
+               .min_text = "everything the frames see (N0 E0 D0 N1 E1 D1)"},
+       .access = field([](auto& p) -> auto& { return p.carve.region; })},
+      {.key = "occlusion_aware_carving",
+       .help = "experimental, fast engine: carve a second time, each frame updating only the "
+               "voxels it can see past the first carving's surfaces",
+       .flag = "--occlusion-aware-carving",
+       .gui = {.group = "Carving", .label = "Occlusion-aware carving", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.occlusion_aware_carving; }),
+       .applies = usesFastEngine},
+
+      // Frames.
+      {.key = "frames.first",
+       .unit = "index",
+       .range = kNonNegative,
+       .help = "the first frame used",
+       .flag = "--first-frame",
+       .gui = {.group = "Frames", .label = "First", .max = 10000000},
+       .access = field([](auto& p) -> auto& { return p.first_frame; })},
+      {.key = "frames.last",
+       .unit = "index",
+       .range = {.min = -1.0},
+       .help = "one past the last frame used; -1 = to the end",
+       .flag = "--last-frame",
+       .gui = {.group = "Frames",
+               .label = "Last (exclusive)",
+               .min = -1,
+               .max = 10000000,
+               .min_text = "end"},
+       .access = field([](auto& p) -> auto& { return p.last_frame; })},
+      {.key = "frames.stride",
+       .unit = "frames",
+       .range = kAtLeastOne,
+       .help = "use every n-th frame",
+       .flag = "--stride",
+       .gui = {.group = "Frames", .label = "Stride", .min = 1, .max = 1000},
+       .access = field([](auto& p) -> auto& { return p.stride; })},
+
+      // Surface points and mesh.
+      {.key = "min_views",
+       .unit = "views",
+       .range = kAtLeastOne,
+       .help = "a surface voxel must be the first return along a beam in at least this many "
+               "views",
+       .flag = "--min-views",
+       .gui = {.group = "Surface", .label = "Min views", .min = 1, .max = 1000},
+       .access = field([](auto& p) -> auto& { return p.min_views; })},
+      {.key = "mesh.enabled",
+       .help = "build a surface mesh from the surface points",
+       .flag = "--mesh",
+       .gui = {.group = "Surface", .label = "Build a mesh"},
+       .access = field([](auto& p) -> auto& { return p.mesh_enabled; })},
+      {.key = "mesh.method",
+       .help = "occupancy: the points' voxels smoothed and contoured; implicit: signed distance "
+               "to the points' tangent planes (minutes on the riser)",
+       .flag = "--mesh-method",
+       .gui = {.group = "Mesh", .label = "Method", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.mesh.method; }),
+       .applies = buildsMesh},
+      {.key = "mesh.occupancy_sigma_voxels",
+       .unit = "voxels",
+       .range = kPositive,
+       .help = "occupancy: Gaussian smoothing of the voxels",
+       .flag = "--mesh-occupancy-sigma",
+       .gui = {.group = "Mesh",
+               .label = "Occupancy sigma",
+               .advanced = true,
+               .min = 0.05,
+               .max = 10,
+               .step = 0.1},
+       .access = field([](auto& p) -> auto& { return p.mesh.occupancy_sigma_voxels; }),
+       .applies = meshesOccupancy},
+      {.key = "mesh.occupancy_iso",
+       .range = kPositive,
+       .help = "occupancy: contour level of the smoothed field",
+       .flag = "--mesh-occupancy-iso",
+       .gui = {.group = "Mesh",
+               .label = "Occupancy iso",
+               .advanced = true,
+               .min = 0.01,
+               .max = 1,
+               .step = 0.05},
+       .access = field([](auto& p) -> auto& { return p.mesh.occupancy_iso; }),
+       .applies = meshesOccupancy},
+      {.key = "mesh.max_distance_voxels",
+       .unit = "voxels",
+       .range = kPositive,
+       .help = "implicit: triangles farther than this from every point are removed",
+       .flag = "--mesh-max-distance",
+       .gui = {.group = "Mesh",
+               .label = "Max distance",
+               .advanced = true,
+               .min = 0.1,
+               .max = 50,
+               .step = 0.5},
+       .access = field([](auto& p) -> auto& { return p.mesh.max_distance_voxels; }),
+       .applies = meshesImplicit},
+      {.key = "mesh.smoothing_iterations",
+       .range = kNonNegative,
+       .help = "windowed-sinc smoothing passes; 0 = none",
+       .flag = "--mesh-smoothing",
+       .gui = {.group = "Mesh", .label = "Smoothing passes", .advanced = true, .max = 500},
+       .access = field([](auto& p) -> auto& { return p.mesh.smoothing_iterations; }),
+       .applies = buildsMesh},
+      {.key = "mesh.smoothing_passband",
+       .range = {.min = 0.0, .max = 2.0, .min_open = true},
+       .help = "windowed-sinc pass band: lower smooths more",
+       .flag = "--mesh-passband",
+       .gui = {.group = "Mesh",
+               .label = "Smoothing pass band",
+               .advanced = true,
+               .min = 0.001,
+               .max = 2,
+               .step = 0.01,
+               .decimals = 3},
+       .access = field([](auto& p) -> auto& { return p.mesh.smoothing_passband; }),
+       .applies = buildsMesh},
+      {.key = "mesh.decimate",
+       .range = {.min = 0.0, .max = 0.95},
+       .help = "fraction of the triangles removed",
+       .flag = "--mesh-decimate",
+       .gui = {.group = "Mesh", .label = "Decimate", .advanced = true, .max = 0.95, .step = 0.05},
+       .access = field([](auto& p) -> auto& { return p.mesh.decimate; }),
+       .applies = buildsMesh},
+      {.key = "mesh.min_fragment_triangles",
+       .unit = "triangles",
+       .range = kAtLeastOne,
+       .help = "connected pieces with fewer triangles are removed",
+       .flag = "--mesh-min-fragment",
+       .gui =
+           {.group = "Mesh", .label = "Min fragment", .advanced = true, .min = 1, .max = 1000000},
+       .access = field([](auto& p) -> auto& { return p.mesh.min_fragment_triangles; }),
+       .applies = buildsMesh},
+  };
+}
+#pragma GCC diagnostic pop
+
+}  // namespace
+
+double ParamSpec::toShown(double value) const {
+  return degrees ? radToDeg(value) : value;
+}
+
+double ParamSpec::fromShown(double shown) const {
+  return degrees ? degToRad(shown) : shown;
+}
+
+const std::vector<ParamSpec>& paramSchema() {
+  static const std::vector<ParamSpec> schema = makeSchema();
+  return schema;
+}
+
+const ParamSpec* findParam(std::string_view key) {
+  for (const ParamSpec& spec : paramSchema()) {
+    if (spec.key == key) {
+      return &spec;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace sonarcarve
