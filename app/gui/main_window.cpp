@@ -322,6 +322,9 @@ void MainWindow::wireRunner() {
                     .arg(result->mesh.triangles.size())
                     .arg(result->total_s, 0, 'f', 1)
                     .arg(result->carve_ms_median, 0, 'f', 1);
+            log(tr("denoising: %1, %2")
+                    .arg(QString::fromStdString(result->detector),
+                         QString::fromStdString(result->denoising)));
             log(summary);
             progress_label_->setText(summary);
             updateRunActions();

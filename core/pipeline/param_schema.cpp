@@ -139,7 +139,7 @@ std::vector<ParamSpec> makeSchema() {
        .flag = "--noise-model",
        .gui = {.group = "Denoising",
                .label = "Noise model",
-               .min_text = "none (learn with sonarcarve-cli noise-model)"},
+               .min_text = "none: learned from the mission"},
        .access = field([](auto& p) -> auto& { return p.noise_model; })},
       {.key = "detector.cfar_guard",
        .unit = "range bins",

@@ -22,11 +22,6 @@ nlohmann::json reportOf(const std::filesystem::path& out) {
   return nlohmann::json::parse(in);
 }
 
-std::string bytesOf(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(CliRecording, ReconstructsAnOculusLogInPlaceAsIfImported) {
   const test::ScratchDir dir;
   // The fixture's ping, 5 m deep, pitched 30 degrees down at a seabed, held for a long time
@@ -55,8 +50,8 @@ TEST(CliRecording, ReconstructsAnOculusLogInPlaceAsIfImported) {
   EXPECT_GT(b["occupied_voxels"].get<int>(), 1000);
   EXPECT_EQ(a["occupied_voxels"], b["occupied_voxels"]);
   EXPECT_EQ(a["surface_points"], b["surface_points"]);
-  EXPECT_EQ(bytesOf(dir.path() / "a" / "surface_points.ply"),
-            bytesOf(dir.path() / "b" / "surface_points.ply"));
+  EXPECT_EQ(test::readBytes((dir.path() / "a" / "surface_points.ply").string()),
+            test::readBytes((dir.path() / "b" / "surface_points.ply").string()));
 }
 
 TEST(CliRecording, AnOculusLogWithoutNavigationSaysItIsStationary) {
