@@ -106,7 +106,7 @@ done
 for page in "$root"/usr/share/man/man1/*.1.gz; do
   warnings=$(LC_ALL=C.UTF-8 MANWIDTH=80 man --warnings -E UTF-8 -l "$page" 2>&1 >/dev/null)
   [ -z "$warnings" ] || fail "man page $page: $warnings"
-  zcat "$page" | grep -q '^\.SH OPTIONS' || fail "$page has no OPTIONS"
+  grep -q '^\.SH OPTIONS' <(zcat "$page") || fail "$page has no OPTIONS"
 done
 # Nothing installed may point into the source or build tree (man pages: uncompressed).
 if grep -rlaF -e "$src" -e "$build" "$root" ||
@@ -171,9 +171,12 @@ echo "$out"
 out=$(run QT_QPA_PLATFORM=offscreen sonarcarve --version 2>/dev/null)
 echo "$out"
 [ "$out" = "SonarCarve $version" ] || fail "sonarcarve --version said '$out'"
-run QT_QPA_PLATFORM=offscreen sonarcarve --help 2>/dev/null | grep -q -- '--noise-model' ||
-  fail "sonarcarve --help"
-run sonarcarve-cli reconstruct --help | grep -q -- '--noise-model' || fail "reconstruct --help"
+# Help texts are captured whole: `grep -q` on a pipe stops reading at the first match, and the
+# program writing the rest then dies of SIGPIPE, which pipefail reports as a failure.
+out=$(run QT_QPA_PLATFORM=offscreen sonarcarve --help 2>/dev/null)
+grep -q -- '--noise-model' <<<"$out" || fail "sonarcarve --help"
+out=$(run sonarcarve-cli reconstruct --help)
+grep -q -- '--noise-model' <<<"$out" || fail "reconstruct --help"
 
 step "Installed demo: simulate -> noise-model -> reconstruct"
 frames=40
