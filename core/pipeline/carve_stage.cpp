@@ -37,12 +37,12 @@ Eigen::AlignedBox3d CarveStage::mapBounds(const std::vector<PosedFrame>& frames)
 }
 
 CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
-                                 const DenoisedFrames& source, Progress& progress,
-                                 MapUpdateSink* updates,
+                                 const Eigen::AlignedBox3d& bounds, const DenoisedFrames& source,
+                                 Progress& progress, MapUpdateSink* updates,
                                  const std::function<void(const FrameProblem&)>& skip) const {
   CarveStageResult result;
   result.carve = params_.carve;
-  result.carve.region = mapBounds(frames);
+  result.carve.region = bounds;
   if (source.probabilities()) {
     result.carve.fusion = CarveParams::Fusion::LogOdds;
     result.carve.intensity_threshold = 0.0;

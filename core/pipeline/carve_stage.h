@@ -36,11 +36,11 @@ class CarveStage {
   /// interest. Throws Error if that is empty.
   Eigen::AlignedBox3d mapBounds(const std::vector<PosedFrame>& frames) const;
 
-  /// Carves `frames` read through `source`. A frame that fails to load is passed to `skip`;
-  /// `updates`, when set, receives each carved frame and the map's changes. Cancellable
-  /// between frames.
-  CarveStageResult run(const std::vector<PosedFrame>& frames, const DenoisedFrames& source,
-                       Progress& progress, MapUpdateSink* updates,
+  /// Carves `frames` read through `source` into a map covering `bounds` (mapBounds(frames)).
+  /// A frame that fails to load is passed to `skip`; `updates`, when set, receives each
+  /// carved frame and the map's changes. Cancellable between frames.
+  CarveStageResult run(const std::vector<PosedFrame>& frames, const Eigen::AlignedBox3d& bounds,
+                       const DenoisedFrames& source, Progress& progress, MapUpdateSink* updates,
                        const std::function<void(const FrameProblem&)>& skip) const;
 
  private:

@@ -59,7 +59,8 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   // Denoise, then carve.
   const CarveStage carving(sonar_, {params_.engine, params_.carve, params_.occlusion_aware_carving},
                            pool_);
-  carving.mapBounds(posed);  // a region outside every view is an error before any file is read
+  // A region outside every view is an error before any frame is read.
+  const Eigen::AlignedBox3d bounds = carving.mapBounds(posed);
   NoiseChoice noise;
   try {
     noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);
@@ -75,7 +76,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     updates.emplace(*observer, update_every);
   }
   CarveStageResult carved =
-      carving.run(posed, frames, progress, updates ? &*updates : nullptr, skip);
+      carving.run(posed, bounds, frames, progress, updates ? &*updates : nullptr, skip);
   result.cancelled = carved.cancelled;
   result.frames_used = carved.used.size();
   if (carved.used.empty()) {

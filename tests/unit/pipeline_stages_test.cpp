@@ -95,8 +95,8 @@ class CarveStageTest : public ::testing::Test {
     NoiseChoice none;
     none.detector = detector_;
     const DenoisedFrames frames(mission, mission.sonar, none);
-    return CarveStage(mission.sonar, params, pool_)
-        .run(posed, frames, progress, nullptr, skipped.sink());
+    const CarveStage stage(mission.sonar, params, pool_);
+    return stage.run(posed, stage.mapBounds(posed), frames, progress, nullptr, skipped.sink());
   }
   DetectorParams detector_ = [] {
     DetectorParams d;
