@@ -5,6 +5,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "common/quantile.h"
+
 namespace sonarcarve {
 namespace {
 
@@ -15,14 +17,6 @@ cv::Mat toColour(const cv::Mat& polar, DisplayWindow w) {
   cv::Mat colour;
   cv::applyColorMap(scaled, colour, cv::COLORMAP_INFERNO);
   return colour;
-}
-
-// The q-quantile of `values` (reorders them).
-float quantile(std::vector<float>& values, double q) {
-  auto it =
-      values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), it, values.end());
-  return *it;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/quantile.h"
 #include "denoise/mission_noise_model.h"
 #include "pipeline/frame_stage.h"
 #include "sim/demo_scenes.h"
@@ -55,12 +56,6 @@ class MissionNoise : public ::testing::Test {
   static test::ScratchDir* dir_;
 };
 test::ScratchDir* MissionNoise::dir_ = nullptr;
-
-double quantile(std::vector<double> v, double q) {
-  const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
-  std::nth_element(v.begin(), v.begin() + k, v.end());
-  return v[static_cast<std::size_t>(k)];
-}
 
 TEST_F(MissionNoise, MatchesTheEmptyWaterModelWithinSamplingError) {
   SilentProgress progress;
