@@ -12,6 +12,7 @@
 #include "cli/terminal_progress.h"
 #include "common/thread_pool.h"
 #include "occlusion/occlusion_resolver.h"
+#include "pipeline/keep_level.h"
 #include "pipeline/reconstruction_params.h"
 #include "sim/demo_scenes.h"
 #include "sim/noise.h"
@@ -126,13 +127,19 @@ double peakMemoryMb() {
 // update and occlusion resolution per frame, then the reference engine on a few frames.
 int benchCarve(const BenchOptions& o, ThreadPool& pool) {
   const Scene scene = makeDemoScene(o.scene);
-  const SonarModel sonar = paperSonar();
+  ImagingSettings imaging;
+  imaging.beam = beamFromName(o.beam);
+  // Frames of a clipped beam say so (carving stays inside the aperture), as missions do.
+  const SonarModel sonar = imaging.beam == SimulatedBeam::Clipped
+                               ? paperSonar().withElevationBeam(ElevationBeam::Clipped)
+                               : paperSonar();
   TrajectorySpec spec;
   spec.kind = usualTrajectory(o.scene);
   const Trajectory trajectory = makeTrajectory(spec, scene.target);
   const RayCaster caster(scene);
-  const SonarSimulator simulator(caster, sonar, ImagingSettings{}, pool);
+  const SonarSimulator simulator(caster, sonar, imaging, pool);
   CarveParams params;
+  params.dark_pixels = CarveParams::DarkPixels::Exact;  // noise-free frames
   if (o.region) {
     // A 4 m x 4 m column around the structure's axis, as an analyst would draw it.
     const Eigen::Vector3d axis = scene.target.axis_point_m;
@@ -152,6 +159,14 @@ int benchCarve(const BenchOptions& o, ThreadPool& pool) {
   }
   if (params.region) {
     bounds = bounds.intersection(*params.region);
+  }
+  if (carvesMainLobe(sonar, params)) {
+    SilentProgress quiet;
+    params.keep_level =
+        measureKeepLevel(
+            frames, [&](std::size_t i) { return std::optional<cv::Mat>(images[i]); },
+            params.dynamic_range_db, quiet)
+            .level;
   }
   const double before_map = peakMemoryMb();
   VoxelMap map(params.voxel_size_m, bounds);
@@ -193,6 +208,8 @@ int benchCarve(const BenchOptions& o, ThreadPool& pool) {
       {"scene", o.scene},
       {"region_of_interest", o.region},
       {"frames", carve.ms.size()},
+      {"beam", o.beam},
+      {"beam_aware", carvesMainLobe(sonar, params)},
       {"threads", pool.size()},
       {"map_blocks", map.blockCount()},
       {"fast_carve_median_ms", carve.median()},
@@ -240,7 +257,8 @@ void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--scene", o->scene, "Demo scene")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Frames to time")->capture_default_str();
-  cmd->add_option("--beam", o->beam, "simulate: clipped | realistic (docs/simulator.md)")
+  cmd->add_option("--beam", o->beam,
+                  "clipped | realistic (docs/simulator.md); carve: beam-aware on realistic")
       ->check(CLI::IsMember({"clipped", "realistic"}))
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the figures as JSON");

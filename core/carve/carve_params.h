@@ -31,6 +31,25 @@ struct CarveParams {
   Fusion fusion = Fusion::Minimum;
   double arc_prior = 2.0;
   double carve_log_odds = -4.0;
+
+  /// Beam-aware carving (fast engine, Minimum fusion; docs/carving.md). The engine assumes
+  /// the sinc^2 elevation beam of sonar/beam_pattern.h (-3 dB at +-aperture/2) and carves
+  /// over its whole main lobe, to the first null: a pixel of intensity I bounds what a return
+  /// at elevation theta would give on the beam's axis by I / p(theta), and a voxel is carved
+  /// once any view bounds it at or below `keep_level`. Off: the seed paper's rule, over
+  /// +-aperture/2 with no weighting.
+  bool beam_aware = true;
+  /// Beam-aware: returns more than this far below the mission's bright returns are not kept
+  /// (the pipeline sets keep_level from it); dB.
+  double dynamic_range_db = 20.0;
+  /// Beam-aware: a voxel whose on-axis bound is at or below this is carved (counts).
+  double keep_level = 0.0;
+  /// What a dark pixel (zero after the threshold) says. Exact: nothing returned there (an
+  /// image without noise, no detector), so it carves across the main lobe. BelowDetection: a
+  /// detector took it for background; a return may have been as strong as its detection
+  /// level, so it carves only inside +-aperture/2, where the beam keeps half its power.
+  enum class DarkPixels { Exact, BelowDetection };
+  DarkPixels dark_pixels = DarkPixels::BelowDetection;
 };
 
 }  // namespace sonarcarve

@@ -4,8 +4,14 @@
 #include <numbers>
 
 #include "common/error.h"
+#include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
+
+bool carvesMainLobe(const SonarModel& sonar, const CarveParams& params) {
+  return params.beam_aware && params.fusion == CarveParams::Fusion::Minimum &&
+         sonar.elevationBeam() == ElevationBeam::MainLobe;
+}
 
 CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& params)
     : sonar_(sonar) {
@@ -19,8 +25,28 @@ CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& par
   range_max_sq_ = static_cast<float>(range_max_ * range_max_);
   const double s = std::sin(0.5 * sonar.verticalAperture());
   sin_half_aperture_sq_ = static_cast<float>(s * s);
-  sin_half_aperture_ = s;
-  cos_half_aperture_ = std::cos(0.5 * sonar.verticalAperture());
+  const SincSquaredBeam elevation_beam(sonar.verticalAperture());
+  carved_half_elevation_ =
+      carvesMainLobe(sonar, params) ? elevation_beam.null(1) : 0.5 * sonar.verticalAperture();
+  if (carved_half_elevation_ >= 0.5 * std::numbers::pi) {
+    throw Error("carving", "vertical aperture",
+                "the beam's main lobe must stay within 90 degrees of its axis");
+  }
+  sin_carved_half_ = std::sin(carved_half_elevation_);
+  cos_carved_half_ = std::cos(carved_half_elevation_);
+  sin_carved_half_sq_ = static_cast<float>(sin_carved_half_ * sin_carved_half_);
+  if (carvesMainLobe(sonar, params)) {
+    constexpr int kGainSamples = 2048;
+    inverse_gain_.resize(kGainSamples);
+    for (int i = 0; i < kGainSamples; ++i) {
+      const double elevation = std::asin((i + 0.5) / kGainSamples * sin_carved_half_);
+      inverse_gain_[static_cast<std::size_t>(i)] =
+          static_cast<float>(1.0 / std::max(elevation_beam.power(elevation), 1e-6));
+    }
+    inverse_gain_scale_ = static_cast<float>(kGainSamples / sin_carved_half_);
+  } else {
+    inverse_gain_.assign(1, 1.0f);
+  }
   if (sonar.bearings().fieldOfView() >= std::numbers::pi) {
     throw Error("carving", "field of view",
                 "fields of view of 180 degrees or more are not supported");
@@ -50,15 +76,18 @@ CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& par
 
 Eigen::AlignedBox3d CarvingGeometry::frustumBounds(const Eigen::Isometry3d& T_world_sonar) const {
   Eigen::AlignedBox3d box;
-  const double half = 0.5 * sonar_.verticalAperture();
+  const double half = carved_half_elevation_;
   const double left = sonar_.bearings().leftEdge();
   const double right = sonar_.bearings().rightEdge();
   const int steps =
       std::max(2, static_cast<int>(std::ceil((right - left) / (std::numbers::pi / 36))));
+  const int elevation_steps =
+      std::max(2, static_cast<int>(std::ceil(2.0 * half / (std::numbers::pi / 36))));
   for (double r : {range_min_, range_max_}) {
     for (int i = 0; i <= steps; ++i) {
       const double bearing = left + (right - left) * i / steps;
-      for (double elevation : {-half, 0.0, half}) {
+      for (int k = 0; k <= elevation_steps; ++k) {
+        const double elevation = -half + 2.0 * half * k / elevation_steps;
         box.extend(T_world_sonar * pointFromPolar({r, bearing, elevation}));
       }
     }
@@ -88,9 +117,9 @@ bool CarvingGeometry::sphereMayTouchFrustum(const Eigen::Vector3d& c, double rad
   if (left_normal_.dot(c) < -radius || right_normal_.dot(c) < -radius) {
     return false;
   }
-  // Elevation: distance to the aperture's cone |theta| = aperture / 2.
+  // Elevation: distance to the cone |theta| = carved half elevation.
   const double horizontal = std::hypot(c.x(), c.y());
-  return std::abs(c.z()) * cos_half_aperture_ - horizontal * sin_half_aperture_ <= radius;
+  return std::abs(c.z()) * cos_carved_half_ - horizontal * sin_carved_half_ <= radius;
 }
 
 }  // namespace sonarcarve

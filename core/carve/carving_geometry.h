@@ -1,7 +1,8 @@
 // CarvingGeometry: what the carving kernels need to know of the sonar, precomputed once:
 // the range window in effect, squared limits, the elevation bound as sin^2 and a fine
 // bearing -> beam lookup table (exact for uniform tables, 1/16 of the narrowest beam for
-// explicit ones), plus the frustum's bounding box in the world for a given pose.
+// explicit ones), the beam-aware elevation extent with a table of the beam's inverse gain,
+// plus the frustum's bounding box in the world for a given pose.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -11,6 +12,10 @@
 #include "sonar/sonar_model.h"
 
 namespace sonarcarve {
+
+/// Whether carving is beam-aware (CarveParams::beam_aware) for this sonar: not for a clipped
+/// beam, nor for log-odds fusion.
+bool carvesMainLobe(const SonarModel& sonar, const CarveParams& params);
 
 class CarvingGeometry {
  public:
@@ -27,7 +32,17 @@ class CarvingGeometry {
     }
     return lut_[static_cast<std::size_t>(u)];
   }
-  /// Bounding box of the frustum (range window x field of view x aperture) in the world.
+  /// Elevation carved on each side of the axis: the main lobe's first null when beam-aware,
+  /// else aperture/2.
+  double carvedHalfElevation() const { return carved_half_elevation_; }
+  /// 1 / p(theta) of the sinc^2 beam for |sin(theta)| = s, s in [0, sin(carvedHalfElevation)]
+  /// (beam-aware only); capped at 1e6 near the null.
+  float inverseGain(float s) const {
+    const auto i = static_cast<std::size_t>(s * inverse_gain_scale_);
+    return inverse_gain_[std::min(i, inverse_gain_.size() - 1)];
+  }
+  /// Bounding box of the frustum (range window x field of view x carved elevation) in the
+  /// world.
   Eigen::AlignedBox3d frustumBounds(const Eigen::Isometry3d& T_world_sonar) const;
   /// Whether a sphere (sonar frame) may touch the frustum; conservative.
   bool sphereMayTouchFrustum(const Eigen::Vector3d& centre_sonar, double radius) const;
@@ -35,6 +50,7 @@ class CarvingGeometry {
   float rangeMinSq() const { return range_min_sq_; }
   float rangeMaxSq() const { return range_max_sq_; }
   float sinHalfApertureSq() const { return sin_half_aperture_sq_; }
+  float sinCarvedHalfElevationSq() const { return sin_carved_half_sq_; }
   float binMin() const { return static_cast<float>(sonar_.range().min_m); }
   float binInvResolution() const { return static_cast<float>(1.0 / sonar_.range().resolution_m); }
 
@@ -45,8 +61,12 @@ class CarvingGeometry {
   float range_min_sq_;
   float range_max_sq_;
   float sin_half_aperture_sq_;
-  double sin_half_aperture_;
-  double cos_half_aperture_;
+  double carved_half_elevation_;
+  double sin_carved_half_;
+  double cos_carved_half_;
+  float sin_carved_half_sq_;
+  std::vector<float> inverse_gain_;
+  float inverse_gain_scale_ = 0.0f;
   Eigen::Vector3d left_normal_;  // inward normals of the bearing wedge's boundary planes
   Eigen::Vector3d right_normal_;
   std::vector<std::int16_t> lut_;

@@ -29,7 +29,14 @@ struct FrameView {
   bool log_odds = false;
   float arc_prior = 0.0f;
   float carve_log_odds = 0.0f;
+  // Beam-aware carving (CarveParams::beam_aware).
+  bool beam_aware = false;
+  bool dark_is_exact = false;
+  float keep_level = 0.0f;
 };
+
+// An image of whole counts holds under half a count where it reads 0.
+constexpr float kDarkPixelLevel = 0.5f;
 
 // Evidence is capped so that a voxel seen lit many times can still be carved by many dark
 // views (the log-odds of p = 0.9999 is 9.2 per view).
@@ -52,6 +59,7 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
   const float rmin2 = g.rangeMinSq();
   const float rmax2 = g.rangeMaxSq();
   const float sin2 = g.sinHalfApertureSq();
+  const float sin2_carved = g.sinCarvedHalfElevationSq();
   const float bin_min = g.binMin();
   const float inv_res = g.binInvResolution();
   int observed = 0;
@@ -65,7 +73,12 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
           continue;  // carved: no view can change it, so skip the projection
         }
         const float r2 = p.squaredNorm();
-        if (r2 < rmin2 || r2 >= rmax2 || p.z() * p.z() > r2 * sin2) {
+        const float z2 = p.z() * p.z();
+        if (r2 < rmin2 || r2 >= rmax2 || z2 > r2 * sin2_carved) {
+          continue;
+        }
+        const bool in_aperture = z2 <= r2 * sin2;
+        if (!f.beam_aware && !in_aperture) {
           continue;
         }
         const int beam = g.beamOf(fastAtan2(p.y(), p.x()));
@@ -85,8 +98,34 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
             continue;  // hidden behind the first surface: not observed by this frame
           }
         }
-        ++observed;
         const float intensity = f.pixels[row * f.cols + beam];
+        if (f.beam_aware) {
+          // What a return here would give on the beam's axis, at most: a lit pixel's
+          // intensity, or what a dark one may hide, over the beam's gain at this elevation.
+          float bound = 0.0f;
+          if (intensity > 0.0f) {
+            bound = intensity * g.inverseGain(std::abs(p.z()) / r);
+          } else if (f.dark_is_exact) {
+            bound = kDarkPixelLevel * g.inverseGain(std::abs(p.z()) / r);
+            if (bound > f.keep_level) {
+              continue;  // near the null, where a surface too returns less than a count
+            }
+          } else if (!in_aperture) {
+            continue;  // below detection, where the beam is weaker than -3 dB: no bound
+          }
+          if (bound <= f.keep_level) {
+            bound = 0.0f;
+          } else if (!in_aperture) {
+            continue;  // outside +-aperture/2 a view carves; it does not keep
+          }
+          ++observed;
+          if (bound < v[x]) {
+            v[x] = bound;
+            changed = true;
+          }
+          continue;
+        }
+        ++observed;
         if (f.log_odds) {
           const float prob = std::clamp(intensity, 1e-4f, 1.0f - 1e-4f);
           const float evidence = std::log(prob / (1.0f - prob)) - f.arc_prior;
@@ -138,6 +177,9 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   frame.log_odds = params_.fusion == CarveParams::Fusion::LogOdds;
   frame.arc_prior = static_cast<float>(params_.arc_prior);
   frame.carve_log_odds = static_cast<float>(params_.carve_log_odds);
+  frame.beam_aware = carvesMainLobe(sonar, params_);
+  frame.dark_is_exact = params_.dark_pixels == CarveParams::DarkPixels::Exact;
+  frame.keep_level = static_cast<float>(params_.keep_level);
   if (visibility.first_return_m != nullptr) {
     frame.first_return = visibility.first_return_m->data();
     frame.elevation_bins = visibility.elevation_bins;

@@ -53,14 +53,20 @@ SonarModel sonarFromYaml(const YAML::Node& node, const YamlFields& fields,
   if (aperture_deg >= 180.0) {
     fields.fail(aperture_node, path + ".vertical_aperture_deg", "expected less than 180");
   }
+  ElevationBeam beam = ElevationBeam::MainLobe;
   if (node["beam_pattern"]) {
     const std::string pattern = fields.text(node["beam_pattern"], path + ".beam_pattern");
-    if (pattern != "sinc") {
-      fields.fail(node["beam_pattern"], path + ".beam_pattern", "expected 'sinc' (the only one)");
+    if (pattern == "clipped") {
+      beam = ElevationBeam::Clipped;
+    } else if (pattern != "sinc") {
+      fields.fail(node["beam_pattern"], path + ".beam_pattern",
+                  "expected 'sinc' (a real beam) or 'clipped' (nothing imaged outside the "
+                  "aperture)");
     }
   }
   try {
-    return SonarModel(id, range, std::move(bearings), degToRad(aperture_deg));
+    return SonarModel(id, range, std::move(bearings), degToRad(aperture_deg))
+        .withElevationBeam(beam);
   } catch (const Error& e) {
     fields.fail(node, path, e.place() + ": " + e.message());
   }
@@ -91,7 +97,8 @@ void emitSonar(YAML::Emitter& out, const SonarModel& sonar) {
   }
   out << YAML::Key << "vertical_aperture_deg" << YAML::Value
       << shortestDegrees(sonar.verticalAperture());
-  out << YAML::Key << "beam_pattern" << YAML::Value << "sinc";
+  out << YAML::Key << "beam_pattern" << YAML::Value
+      << (sonar.elevationBeam() == ElevationBeam::Clipped ? "clipped" : "sinc");
   out << YAML::EndMap;
 }
 

@@ -1,9 +1,12 @@
 #include "pipeline/reconstruction.h"
 
+#include "carve/carving_geometry.h"
+
 #include <algorithm>
 #include <chrono>
 #include <optional>
 
+#include "carve/carving_geometry.h"
 #include "common/error.h"
 #include "pipeline/carve_stage.h"
 #include "pipeline/frame_stage.h"
@@ -57,10 +60,9 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     throw Error(mission_.folder.string(), "", "no frame can be placed in the world");
   }
   // Denoise, then carve.
-  const CarveStage carving(sonar_, {params_.engine, params_.carve, params_.occlusion_aware_carving},
-                           pool_);
+  CarveStageParams stage{params_.engine, params_.carve, params_.occlusion_aware_carving};
   // A region outside every view is an error before any frame is read.
-  const Eigen::AlignedBox3d bounds = carving.mapBounds(posed);
+  const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
   NoiseChoice noise;
   try {
     noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);
@@ -71,6 +73,19 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   result.detector = std::string(toString(noise.detector.mode));
   result.denoising = noise.reason;
   const DenoisedFrames frames(mission_, sonar_, noise);
+  if (carvesMainLobe(sonar_, stage.carve) && !frames.probabilities()) {
+    try {
+      result.keep_level = measureKeepLevel(frames, posed, stage.carve.dynamic_range_db, progress);
+    } catch (const Cancelled&) {
+      result.cancelled = true;
+      return result;
+    }
+    stage.carve.keep_level = result.keep_level.level;
+    stage.carve.dark_pixels = noise.detector.mode == DetectorMode::None
+                                  ? CarveParams::DarkPixels::Exact
+                                  : CarveParams::DarkPixels::BelowDetection;
+  }
+  const CarveStage carving(sonar_, stage, pool_);
   std::optional<MapUpdateSink> updates;
   if (observer) {
     updates.emplace(*observer, update_every);

@@ -16,6 +16,7 @@
 #include "io/mission.h"
 #include "mesh/surface_mesher.h"
 #include "occlusion/surface_points.h"
+#include "pipeline/keep_level.h"
 #include "pipeline/map_updates.h"
 #include "pipeline/reconstruction_params.h"
 
@@ -29,6 +30,7 @@ struct ReconstructionResult {
   std::size_t frames_used = 0;
   std::string detector;   ///< the detector that ran (`auto` made concrete)
   std::string denoising;  ///< which noise model it used and why, in words
+  KeepLevel keep_level;   ///< beam-aware carving's keep level (level 0 when not beam-aware)
   std::vector<FrameProblem> skipped;
   bool cancelled = false;
   std::size_t occupied_voxels = 0;  ///< all occupied voxels of the carved map

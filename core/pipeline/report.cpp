@@ -28,6 +28,12 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                            {"carve_ms_per_frame_median", result.carve_ms_median},
                            {"occlusion_ms_per_frame", result.occlusion_ms_per_frame},
                            {"total_s", result.total_s}};
+  if (params.carve.beam_aware && result.keep_level.frames > 0) {
+    report["beam_aware_carving"] = {{"bright_returns", result.keep_level.bright_returns},
+                                    {"dynamic_range_db", params.carve.dynamic_range_db},
+                                    {"keep_level", result.keep_level.level},
+                                    {"frames_measured", result.keep_level.frames}};
+  }
   if (mission.source) {
     report["source"] = mission.source->kind();
   }

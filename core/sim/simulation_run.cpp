@@ -72,10 +72,14 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   const RayCaster caster(request.scene);
   const SonarSimulator simulator(caster, request.sonar, request.imaging, pool);
   VisibleSurface visible;
+  // A clipped beam images nothing outside the aperture: the mission says so, for carving.
+  const SonarModel mission_sonar = request.imaging.beam == SimulatedBeam::Clipped
+                                       ? request.sonar.withElevationBeam(ElevationBeam::Clipped)
+                                       : request.sonar;
   MissionWriter writer(request.output,
                        request.scene.name + (request.empty_water ? " (empty water)" : "") + " / " +
                            request.trajectory.kind,
-                       request.sonar, trajectory.mounting);
+                       mission_sonar, trajectory.mounting);
   SimulationResult result;
   for (std::size_t i = 0; i < frames; ++i) {
     if (progress.cancelled()) {

@@ -36,6 +36,12 @@ Eigen::Vector3d pointFromPolar(const Polar& polar);
 /// Point in the sonar frame -> polar coordinates (range 0 gives bearing 0, elevation 0).
 Polar polarFromPoint(const Eigen::Vector3d& p_sonar);
 
+/// What the sonar's elevation beam does beyond its -3 dB aperture. MainLobe: a real array's
+/// beam, whose main lobe and side lobes still image structure there (beam-aware carving
+/// weighs it); Clipped: nothing is imaged outside +-aperture/2 (the seed paper's simulator and
+/// ours with `--beam clipped`), so carving stays inside the aperture.
+enum class ElevationBeam { MainLobe, Clipped };
+
 class SonarModel {
  public:
   /// Throws Error if the geometry is invalid (no bins, non-positive resolution, ...).
@@ -48,7 +54,16 @@ class SonarModel {
   double verticalAperture() const { return beam_pattern_.aperture(); }
   /// The same sonar with another vertical aperture (radians).
   SonarModel withVerticalAperture(double vertical_aperture_rad) const {
-    return SonarModel(id_, range_, bearings_, vertical_aperture_rad);
+    SonarModel other(id_, range_, bearings_, vertical_aperture_rad);
+    other.elevation_beam_ = elevation_beam_;
+    return other;
+  }
+  ElevationBeam elevationBeam() const { return elevation_beam_; }
+  /// The same sonar with another elevation beam.
+  SonarModel withElevationBeam(ElevationBeam beam) const {
+    SonarModel other = *this;
+    other.elevation_beam_ = beam;
+    return other;
   }
   int rows() const { return range_.count; }
   int cols() const { return bearings_.count(); }
@@ -66,6 +81,7 @@ class SonarModel {
   RangeBins range_;
   BearingTable bearings_;
   BeamPattern beam_pattern_;
+  ElevationBeam elevation_beam_ = ElevationBeam::MainLobe;
 };
 
 }  // namespace sonarcarve

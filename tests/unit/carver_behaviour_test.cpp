@@ -15,9 +15,12 @@ namespace sonarcarve {
 namespace {
 
 // A narrow sonar: 4 cm bins from 1 m to 3 m, 5 beams over 10 degrees, 10 degree aperture.
+// Its beam is clipped, the seed paper's model, under which every engine carves by the paper's
+// rule (beam-aware carving of a real beam: beam_aware_carving_test.cpp).
 SonarModel tinySonar() {
   return SonarModel("tiny", RangeBins{1.0, 0.04, 50}, BearingTable::uniform(degToRad(10), 5),
-                    degToRad(10));
+                    degToRad(10))
+      .withElevationBeam(ElevationBeam::Clipped);
 }
 
 // An image lit with `value` in the bin around `range_m` in every beam, dark elsewhere.

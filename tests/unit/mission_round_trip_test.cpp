@@ -35,6 +35,7 @@ void expectSameMission(const SonarModel& sonar, const Mounting& mounting, const 
     ASSERT_NEAR(read.sonar.bearings().centre(j), sonar.bearings().centre(j), 1e-12) << j;
   }
   EXPECT_EQ(read.sonar.verticalAperture(), sonar.verticalAperture());
+  EXPECT_EQ(read.sonar.elevationBeam(), sonar.elevationBeam());
   EXPECT_TRUE(read.mounting.T_vehicle_sonar().isApprox(mounting.T_vehicle_sonar(), 1e-15));
   ASSERT_EQ(read.nav.samples().size(), nav.samples().size());
   for (std::size_t i = 0; i < nav.samples().size(); ++i) {
@@ -83,6 +84,11 @@ TEST(MissionFormat, WriteThenReadGivesTheSameMissionWithUniformBearings) {
 
 TEST(MissionFormat, WriteThenReadGivesTheSameMissionWithABearingTable) {
   roundTrip(test::nonUniformSonar());
+}
+
+TEST(MissionFormat, AClippedBeamIsWrittenAndReadBack) {
+  // A mission from a clipped-beam simulation says so, and carving stays inside the aperture.
+  roundTrip(test::paperSonar().withElevationBeam(ElevationBeam::Clipped));
 }
 
 TEST(MissionFormat, TheExampleMissionReadsCompletely) {
