@@ -42,6 +42,11 @@ void addEvaluateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   r.accuracy_median_m, r.accuracy_p90_m);
       std::printf("at tau %.3f m: precision %.3f  completeness %.3f  F-score %.3f\n", r.tau_m,
                   r.precision, r.completeness, r.fscore);
+      std::printf(
+          "completeness by orientation: horizontal faces %.3f (%zu points), the rest "
+          "%.3f (%zu points)\n",
+          r.completeness_horizontal, r.reference_points_horizontal, r.completeness_other,
+          r.reference_points_other);
       std::printf("chamfer %.4f m, points farther than 10 cm: %zu\n", r.chamfer_m,
                   r.floating_points);
     }

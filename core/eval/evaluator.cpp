@@ -6,10 +6,12 @@
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkStaticPointLocator.h>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "common/angles.h"
 #include "common/error.h"
 #include "common/thread_pool.h"
 #include "geometry/internal/vtk_mesh.h"
@@ -26,6 +28,11 @@ double quantile(std::vector<float> values, double q) {
   std::nth_element(values.begin(), it, values.end());
   return *it;
 }
+
+// Reference points farther than this from every reconstructed point count at this distance
+// (in the Chamfer distance): an unbounded search from far outside the cloud visits every bin
+// of the locator in between, minutes for a structure the reconstruction missed.
+constexpr double kFarDistance_m = 1.0;
 
 std::vector<float> distancesToPoints(const std::vector<Eigen::Vector3f>& queries,
                                      const std::vector<Eigen::Vector3f>& cloud, ThreadPool& pool) {
@@ -44,8 +51,10 @@ std::vector<float> distancesToPoints(const std::vector<Eigen::Vector3f>& queries
   pool.parallelFor(queries.size(), 1024, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       double x[3] = {queries[i].x(), queries[i].y(), queries[i].z()};
-      const vtkIdType id = locator->FindClosestPoint(x);
-      d[i] = (cloud[static_cast<std::size_t>(id)] - queries[i]).norm();
+      double dist2 = 0.0;
+      const vtkIdType id = locator->FindClosestPointWithinRadius(kFarDistance_m, x, dist2);
+      d[i] = id < 0 ? static_cast<float>(kFarDistance_m)
+                    : (cloud[static_cast<std::size_t>(id)] - queries[i]).norm();
     }
   });
   return d;
@@ -67,9 +76,12 @@ double fractionWithin(const std::vector<float>& v, double tau) {
   return static_cast<double>(n) / static_cast<double>(v.size());
 }
 
-std::vector<float> distancesToMesh(const std::vector<Eigen::Vector3f>& points, const Scene& mesh,
-                                   ThreadPool& pool) {
-  return MeshDistance(mesh, pool).distances(points);
+// A face is horizontal when its normal lies within 30 degrees of vertical.
+bool isHorizontal(const Scene& mesh, std::size_t triangle) {
+  const auto& t = mesh.triangles[triangle];
+  const Eigen::Vector3f n =
+      (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+  return n.squaredNorm() > 0.0f && std::abs(n.z()) >= std::cos(degToRad(30.0)) * n.norm();
 }
 
 }  // namespace
@@ -89,9 +101,9 @@ MeshDistance::MeshDistance(const Scene& mesh, ThreadPool& pool)
 
 MeshDistance::~MeshDistance() = default;
 
-std::vector<float> MeshDistance::distances(const std::vector<Eigen::Vector3f>& points,
-                                           double max_distance_m) const {
-  std::vector<float> d(points.size());
+void MeshDistance::forEachClosest(
+    const std::vector<Eigen::Vector3f>& points, double max_distance_m,
+    const std::function<void(std::size_t, double, long long)>& visit) const {
   const bool bounded = std::isfinite(max_distance_m);
   pool_.parallelFor(points.size(), 1024, [&](std::size_t b, std::size_t e) {
     auto cell = vtkSmartPointer<vtkGenericCell>::New();
@@ -106,11 +118,29 @@ std::vector<float> MeshDistance::distances(const std::vector<Eigen::Vector3f>& p
       } else if (locator_->cells->FindClosestPointWithinRadius(x, max_distance_m, closest, cell,
                                                                cell_id, sub_id, dist2) == 0) {
         dist2 = max_distance_m * max_distance_m;
+        cell_id = -1;
       }
-      d[i] = static_cast<float>(std::sqrt(dist2));
+      visit(i, dist2, static_cast<long long>(cell_id));
     }
   });
+}
+
+std::vector<float> MeshDistance::distances(const std::vector<Eigen::Vector3f>& points,
+                                           double max_distance_m) const {
+  std::vector<float> d(points.size());
+  forEachClosest(points, max_distance_m, [&](std::size_t i, double dist2, long long) {
+    d[i] = static_cast<float>(std::sqrt(dist2));
+  });
   return d;
+}
+
+std::vector<std::size_t> MeshDistance::nearestTriangles(
+    const std::vector<Eigen::Vector3f>& points) const {
+  std::vector<std::size_t> nearest(points.size());
+  forEachClosest(
+      points, std::numeric_limits<double>::infinity(),
+      [&](std::size_t i, double, long long cell) { nearest[i] = static_cast<std::size_t>(cell); });
+  return nearest;
 }
 
 std::vector<Eigen::Vector3f> sampleSurface(const Scene& mesh, double spacing_m) {
@@ -146,7 +176,8 @@ EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, co
   r.tau_m = tau_m;
   r.reconstructed_points = reconstruction.size();
   r.reference_points = reference_points.size();
-  r.point_errors_m = distancesToMesh(reconstruction, mesh, pool);
+  const MeshDistance to_mesh(mesh, pool);
+  r.point_errors_m = to_mesh.distances(reconstruction);
   r.accuracy_mean_m = mean(r.point_errors_m);
   r.accuracy_median_m = quantile(r.point_errors_m, 0.5);
   r.accuracy_p90_m = quantile(r.point_errors_m, 0.9);
@@ -156,6 +187,23 @@ EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, co
   const std::vector<float> to_reconstruction =
       distancesToPoints(reference_points, reconstruction, pool);
   r.completeness = fractionWithin(to_reconstruction, tau_m);
+  const std::vector<std::size_t> faces = to_mesh.nearestTriangles(reference_points);
+  std::size_t found_horizontal = 0, found_other = 0;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const bool found = to_reconstruction[i] <= tau_m;
+    if (isHorizontal(mesh, faces[i])) {
+      ++r.reference_points_horizontal;
+      found_horizontal += found ? 1 : 0;
+    } else {
+      ++r.reference_points_other;
+      found_other += found ? 1 : 0;
+    }
+  }
+  const auto ratio = [](std::size_t a, std::size_t b) {
+    return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b);
+  };
+  r.completeness_horizontal = ratio(found_horizontal, r.reference_points_horizontal);
+  r.completeness_other = ratio(found_other, r.reference_points_other);
   r.fscore = r.precision + r.completeness > 0.0
                  ? 2.0 * r.precision * r.completeness / (r.precision + r.completeness)
                  : 0.0;
@@ -172,6 +220,10 @@ std::string EvaluationResult::toJson() const {
                         {"accuracy_p90_m", accuracy_p90_m},
                         {"precision", precision},
                         {"completeness", completeness},
+                        {"completeness_horizontal", completeness_horizontal},
+                        {"completeness_other", completeness_other},
+                        {"reference_points_horizontal", reference_points_horizontal},
+                        {"reference_points_other", reference_points_other},
                         {"fscore", fscore},
                         {"chamfer_m", chamfer_m},
                         {"floating_points_over_10cm", floating_points}}

@@ -2,13 +2,18 @@
 //   accuracy      distance from each reconstructed point to the mesh (mean, median, p90)
 //   precision     fraction of reconstructed points within tau of the mesh
 //   completeness  fraction of the reference surface points (the simulator's visible points,
-//                 or the mesh sampled every 1 cm) within tau of the reconstruction
+//                 or the mesh sampled every 1 cm) within tau of the reconstruction; also
+//                 split by the orientation of the mesh under each reference point: faces
+//                 whose normal lies within 30 degrees of vertical (tops, decks, the seabed)
+//                 and the rest
 //   F-score       harmonic mean of precision and completeness at tau
 //   Chamfer       mean accuracy + mean distance from reference points to the reconstruction
+//                 (each counted at most 1 m)
 // Per-point errors are kept for colouring. Distances use VTK's static locators.
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +34,12 @@ struct EvaluationResult {
   double accuracy_p90_m = 0.0;
   double precision = 0.0;
   double completeness = 0.0;
+  /// Completeness on reference points whose nearest face is within 30 degrees of horizontal
+  /// (normal within 30 degrees of vertical), and on the others; with their counts.
+  double completeness_horizontal = 0.0;
+  double completeness_other = 0.0;
+  std::size_t reference_points_horizontal = 0;
+  std::size_t reference_points_other = 0;
   double fscore = 0.0;
   double chamfer_m = 0.0;
   std::size_t floating_points = 0;    ///< reconstructed points farther than 10 cm from the mesh
@@ -51,9 +62,14 @@ class MeshDistance {
   std::vector<float> distances(
       const std::vector<Eigen::Vector3f>& points,
       double max_distance_m = std::numeric_limits<double>::infinity()) const;
+  /// Index into the mesh's triangles of the triangle nearest each point.
+  std::vector<std::size_t> nearestTriangles(const std::vector<Eigen::Vector3f>& points) const;
 
  private:
   struct Locator;  // VTK stays out of core's public headers
+  // Runs `visit(i, squared distance, cell)` for each point's closest point on the mesh.
+  void forEachClosest(const std::vector<Eigen::Vector3f>& points, double max_distance_m,
+                      const std::function<void(std::size_t, double, long long)>& visit) const;
   std::unique_ptr<Locator> locator_;
   ThreadPool& pool_;
 };
