@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/thread_pool.h"
 #include "geometry/internal/vtk_mesh.h"
+#include "io/finite_points.h"
 
 namespace sonarcarve {
 namespace {
@@ -138,6 +139,17 @@ EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, co
   }
   if (reconstruction.empty()) {
     throw Error("evaluation", "reconstruction", "the reconstruction has no points");
+  }
+  if (!(tau_m > 0.0) || !std::isfinite(tau_m)) {
+    throw Error("evaluation", "tau", "expected a positive distance in metres");
+  }
+  // A NaN is within no distance and beyond none: it would make the figures depend on the order.
+  for (std::size_t i = 0; i < reconstruction.size(); ++i) {
+    requireFinitePoint(reconstruction[i], "evaluation",
+                       "reconstruction point " + std::to_string(i));
+  }
+  for (std::size_t i = 0; i < reference_points.size(); ++i) {
+    requireFinitePoint(reference_points[i], "evaluation", "visible point " + std::to_string(i));
   }
   if (reference_points.empty()) {
     reference_points = sampleSurface(mesh, 0.01);

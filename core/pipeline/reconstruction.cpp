@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "pipeline/carve_stage.h"
 #include "pipeline/frame_stage.h"
+#include "pipeline/size_limits.h"
 #include "pipeline/surface_stage.h"
 
 namespace sonarcarve {
@@ -61,6 +62,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
                            pool_);
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = carving.mapBounds(posed);
+  requireBoundedSizes(bounds, sonar_, params_.carve);
   NoiseChoice noise;
   try {
     noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);
