@@ -61,6 +61,15 @@ CatalogueCase badEvaluateInput(const std::string& name, const std::string& file,
           .message = message};
 }
 
+std::string binaryPlyWithNan() {
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
+      "property float y\nproperty float z\nend_header\n";
+  const float values[6] = {2, 0, 10, NAN, 0, 10};
+  ply.append(reinterpret_cast<const char*>(values), sizeof values);
+  return ply;
+}
+
 std::string meshWithFace(long a, long b, long c) {
   return asciiPly({{2, 0, 10}, {2.1, 0, 10}, {2, 0.1, 10}}, {{0, 1, 2}, {a, b, c}});
 }
@@ -116,6 +125,27 @@ std::vector<CatalogueCase> contentCases() {
            },
        .message = {"params.yaml: line 1: voxel_size_m: expected a number, above 0, got -1"},
        .absent = {"out"}},
+      {.name = "ByteOrderMarkInRecordingNav",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+             writeBytes(ws / "nav.csv", kBom + readText(ws.mission() / "nav.csv"));
+             return std::string("info ping.raw --nav nav.csv");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"Failed       0 frames"}},
+      {.name = "ByteOrderMarkInMountingYaml",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+             std::filesystem::copy_file(ws.mission() / "nav.csv", ws / "nav.csv");
+             writeBytes(
+                 ws / "mounting.yaml",
+                 std::string(kBom) + "translation_m: [0, 0, 0]\nroll_pitch_yaw_deg: [0, 0, x]\n");
+             return std::string("info ping.raw --nav nav.csv --mounting mounting.yaml");
+           },
+       .message =
+           {"mounting.yaml: line 2: mounting.roll_pitch_yaw_deg[2]: expected a finite number"}},
       badNavValue("NavNan", "nan"),
       badNavValue("NavInfinite", "inf"),
       badNavValue("NavNegativeInfinite", "-inf"),
@@ -125,6 +155,8 @@ std::vector<CatalogueCase> contentCases() {
       badEvaluateInput("EvaluateInfinitePoint", "points.ply",
                        asciiPly({{2, 0, 10}, {2, INFINITY, 10}}),
                        {"points.ply: vertex 1: expected finite coordinates, found (2, inf, 10)"}),
+      badEvaluateInput("EvaluateNanPointInBinaryPly", "points.ply", binaryPlyWithNan(),
+                       {"points.ply: vertex 1: expected finite coordinates, found (nan, 0, 10)"}),
       badEvaluateInput("EvaluateNanVisiblePoint", "visible.ply", asciiPly({{NAN, 0, 10}}),
                        {"visible.ply: vertex 0: expected finite coordinates"}),
       badEvaluateInput("ReferencePlyNanVertex", "reference.ply",
@@ -177,6 +209,12 @@ std::vector<CatalogueCase> contentCases() {
            },
        .message = {"mesh.ply: vertex 2: expected finite coordinates"},
        .absent = {"mesh.stl"}},
+      badEvaluateInput("ReferencePlyFaceIndexNotWhole", "reference.ply",
+                       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                       "property float y\nproperty float z\nelement face 1\n"
+                       "property list uchar int vertex_indices\nend_header\n"
+                       "2 0 10\n2.1 0 10\n2 0.1 10\n3 0 1 1.5\n",
+                       {"reference.ply: face 0: vertex index 1.5 out of range"}),
   };
   return cases;
 }

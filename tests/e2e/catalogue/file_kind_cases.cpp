@@ -95,6 +95,30 @@ std::vector<Input> inputs() {
        [](const Workspace& ws) { return recordingArgs(ws, " --nav-map map.yaml"); }},
       {"Mounting", "mounting.yaml",
        [](const Workspace& ws) { return recordingArgs(ws, " --mounting mounting.yaml"); }},
+      {"ImportedLog",
+       "ping.raw",
+       [](const Workspace& ws) {
+         recordingArgs(ws, "");
+         return std::string("import --format oculus ping.raw --nav nav.csv --out imported");
+       },
+       Outcome::Fails,
+       {"imported/mission.yaml"}},
+      {"ReconstructedRecordingNav",
+       "nav.csv",
+       [](const Workspace& ws) {
+         recordingArgs(ws, "");
+         return std::string("reconstruct ping.raw --nav nav.csv --out out");
+       },
+       Outcome::Fails,
+       {"out/report.json"}},
+      {"FrameNoiseModel",
+       "noise.yaml",
+       [](const Workspace&) {
+         return std::string(
+             "frame mission --index 0 --noise-model noise.yaml --detected detected.png");
+       },
+       Outcome::Fails,
+       {"detected.png"}},
   };
 }
 

@@ -117,6 +117,36 @@ std::vector<CatalogueCase> outputCases() {
        .outcome = Outcome::Succeeds,
        .message = {"removed out/mesh.ply of an earlier run"},
        .absent = {"out/mesh.ply", "out/mesh.stl"}},
+      {.name = "ExportPointsOntoAFolder",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "points.ply");
+             return "export " + writeReconstruction(ws) + " --points --out points.ply";
+           },
+       .message = {"points.ply: cannot replace the file: Is a directory"}},
+      {.name = "NoiseModelOntoAFolder",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "noise.yaml");
+             return std::string("noise-model mission --out noise.yaml");
+           },
+       .message = {"noise.yaml: cannot replace the file: Is a directory"}},
+      {.name = "ImportIntoAFile",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+             std::filesystem::copy_file(ws.mission() / "nav.csv", ws / "nav.csv");
+             writePrevious(ws / "imported");
+             return std::string("import --format oculus ping.raw --nav nav.csv --out imported");
+           },
+       .message = {"imported: is a file: expected a new or empty folder"},
+       .intact = {"imported"}},
+      {.name = "SimulateIntoAFolderThatCannotBeWritten",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("simulate --scene riser --max-frames 1 --out /proc");
+           },
+       .message = {"/proc: cannot write in the output folder"}},
       exportFullDisk("ExportObjOnAFullDisk", "mesh.obj"),
       exportFullDisk("ExportStlOnAFullDisk", "mesh.stl"),
       exportFullDisk("ExportPlyOnAFullDisk", "mesh.ply"),
