@@ -90,6 +90,18 @@ std::vector<CatalogueCase> limitCases() {
            },
        .message = {"--elevation-step: Value 1e-7 not in range 0.010000 to 90"},
        .absent = {"sim"}},
+      // Completeness samples the reference; on a 1 km triangle every 1 cm that was 5e9 points.
+      {.name = "EvaluateOnAReferenceOfOneKilometre",
+       .prepare =
+           [](const Workspace& ws) {
+             writeBytes(ws / "reference.ply",
+                        asciiPly({{0, 0, 10}, {1000, 0, 10}, {0, 1000, 10}}, {{0, 1, 2}}));
+             writeBytes(ws / "points.ply", asciiPly({{2, 0, 10}, {2.05, 0.01, 10}}));
+             return std::string(
+                 "evaluate --json --reference reference.ply --reconstruction points.ply");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"\"reference_spacing_m\": 0.555"}},
       {.name = "ReconstructVoxelSizeTiny",
        .prepare =
            [](const Workspace&) {
