@@ -14,11 +14,12 @@ namespace sonarcarve::cli {
 namespace {
 
 void writePng(const cv::Mat& picture, const std::string& path) {
-  replaceFileAtomically(path, [&](const std::filesystem::path& tmp) {
-    if (!cv::imwrite(tmp.string(), picture)) {
-      throw Error(path, "", "cannot write PNG");
-    }
-  });
+  std::vector<unsigned char> png;
+  if (!cv::imencode(".png", picture, png)) {
+    throw Error(path, "", "cannot encode the picture as PNG");
+  }
+  writeFileAtomically(path,
+                      std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 }  // namespace

@@ -29,6 +29,11 @@ int main(int argc, char** argv) {
   } catch (const sonarcarve::Error& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
+  } catch (const std::exception& e) {
+    // Every known failure is a sonarcarve::Error naming its input; this is a bug, but it still
+    // ends with a message and an exit code rather than an abort.
+    std::cerr << "error: unexpected failure (please report): " << e.what() << "\n";
+    return 70;
   }
   return exit_code;
 }

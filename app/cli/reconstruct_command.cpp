@@ -2,9 +2,9 @@
 // Writes DIR/surface_points.ply, DIR/mesh.ply and DIR/mesh.stl (world NED, metres), DIR/map.bt
 // (fast engine), DIR/params.yaml (what was used) and DIR/report.json; a simulated mission's
 // ground truth, when present, is evaluated too.
-#include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "carve/occupancy_export.h"
 #include "cli/commands.h"
@@ -15,6 +15,7 @@
 #include "io/atomic_file.h"
 #include "io/frame_source.h"
 #include "io/mission.h"
+#include "io/output_folder.h"
 #include "mesh/mesh_export.h"
 #include "pipeline/reconstruction.h"
 #include "pipeline/report.h"
@@ -40,6 +41,24 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
   return p;
 }
 
+// A mesh or map of an earlier run into the same folder that this run did not rewrite would be
+// taken for this run's (export reads mesh.ply): it goes, once this run's files are written.
+void removeEarlierOutputs(const std::filesystem::path& out, const ReconstructionResult& result) {
+  std::vector<std::string> stale;
+  if (!result.map) {
+    stale.push_back("map.bt");
+  }
+  if (result.mesh.triangles.empty()) {
+    stale.insert(stale.end(), {"mesh.ply", "mesh.stl"});
+  }
+  for (const std::string& name : stale) {
+    std::error_code ec;
+    if (std::filesystem::remove(out / name, ec)) {
+      std::cerr << "removed " << (out / name).string() << " of an earlier run\n";
+    }
+  }
+}
+
 int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
   const Mission mission = openMission(o.mission, openOptionsFrom(o.source));
   for (const std::string& warning : mission.warnings) {
@@ -47,7 +66,8 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
   }
   const ReconstructionParams params = paramsFrom(o);
   const std::filesystem::path out(o.out);
-  std::filesystem::create_directories(out);
+  prepareOutputFolder(out);
+  const OutputFolderLock lock(out);
 
   TerminalProgress progress;
   const ReconstructionResult result = Pipeline(mission, params, pool).run(progress);
@@ -61,6 +81,9 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
   for (const FrameProblem& p : result.skipped) {
     std::cerr << "skipped: " << p.message << "\n";
   }
+  // The report first: it reads the ground truth, and a broken one must fail the run before any
+  // file is written.
+  const std::string report = reconstructionReport(mission, params, result, pool);
   writeSurfacePointsPly(result.surface, out / "surface_points.ply");
   if (result.map) {
     writeOccupancyBt(*result.map, out / "map.bt");
@@ -73,8 +96,8 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
     exportMesh(result.mesh, out / "mesh.stl", stl);
   }
   writeFileAtomically(out / "params.yaml", params.toYaml());
-  const std::string report = reconstructionReport(mission, params, result, pool);
   writeFileAtomically(out / "report.json", report);
+  removeEarlierOutputs(out, result);
   std::cout << report;
   return result.cancelled ? 130 : 0;
 }

@@ -6,6 +6,7 @@
 #include "common/angles.h"
 #include "common/error.h"
 #include "geometry/scene_io.h"
+#include "io/output_folder.h"
 #include "sim/demo_scenes.h"
 #include "sim/simulation_run.h"
 
@@ -68,6 +69,7 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
       o.empty_water,
       o.max_frames >= 0 ? std::optional<int>(o.max_frames) : std::nullopt,
       out};
+  prepareOutputFolder(out);
 
   TerminalProgress progress;
   const SimulationResult result = runSimulation(request, progress, pool);
@@ -107,6 +109,7 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "Random-walk step of the recorded attitude per frame, deg")
       ->capture_default_str();
   cmd->add_option("--elevation-step", o->elevation_step_deg, "Ray spacing in elevation, deg")
+      ->check(CLI::Range(0.01, 90.0))
       ->capture_default_str();
   cmd->add_option("--rays-per-beam", o->rays_per_beam, "Rays across each beam")
       ->capture_default_str();

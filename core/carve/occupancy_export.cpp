@@ -1,6 +1,7 @@
 #include "carve/occupancy_export.h"
 
 #include <octomap/OcTree.h>
+#include <sstream>
 #include <unordered_set>
 
 #include "common/error.h"
@@ -39,11 +40,11 @@ void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path) {
   }
   tree.updateInnerOccupancy();
   tree.prune();
-  replaceFileAtomically(path, [&](const std::filesystem::path& tmp) {
-    if (!tree.writeBinary(tmp.string())) {
-      throw Error(path.string(), "", "OctoMap could not write the .bt file");
-    }
-  });
+  std::ostringstream bt;
+  if (!tree.writeBinary(bt)) {
+    throw Error(path.string(), "", "OctoMap could not encode the .bt file");
+  }
+  writeFileAtomically(path, bt.str());
 }
 
 }  // namespace sonarcarve

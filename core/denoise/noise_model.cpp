@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "io/atomic_file.h"
+#include "io/input_file.h"
 
 namespace sonarcarve {
 
@@ -104,26 +105,20 @@ void NoiseModel::checkGeometry(const SonarModel& sonar, const std::string& what)
 }
 
 void NoiseModel::save(const std::filesystem::path& path) const {
-  replaceFileAtomically(path, [&](const std::filesystem::path& tmp) {
-    cv::FileStorage fs(tmp.string(), cv::FileStorage::WRITE);
-    if (!fs.isOpened()) {
-      throw Error(path.string(), "", "cannot write the noise model");
-    }
-    fs << "format"
-       << "sonarcarve-noise-model"
-       << "version" << 1 << "frames" << frames_ << "smoothing" << smoothing_;
-    fs << "rows" << mean_.rows << "cols" << mean_.cols << "range_min_m" << range_min_m_
-       << "range_resolution_m" << range_resolution_m_ << "vertical_aperture_rad"
-       << vertical_aperture_rad_ << "bearings_rad" << cv::Mat(bearings_rad_).t();
-    fs << "mean" << mean_ << "stddev" << stddev_ << "rayleigh_sigma" << rayleigh_sigma_;
-  });
+  cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY);
+  fs << "format"
+     << "sonarcarve-noise-model"
+     << "version" << 1 << "frames" << frames_ << "smoothing" << smoothing_;
+  fs << "rows" << mean_.rows << "cols" << mean_.cols << "range_min_m" << range_min_m_
+     << "range_resolution_m" << range_resolution_m_ << "vertical_aperture_rad"
+     << vertical_aperture_rad_ << "bearings_rad" << cv::Mat(bearings_rad_).t();
+  fs << "mean" << mean_ << "stddev" << stddev_ << "rayleigh_sigma" << rayleigh_sigma_;
+  writeFileAtomically(path, fs.releaseAndGetString());
 }
 
 NoiseModel NoiseModel::load(const std::filesystem::path& path) {
   const std::string file = path.string();
-  if (!std::filesystem::is_regular_file(path)) {
-    throw Error(file, "", "noise model not found");
-  }
+  requireRegularFile(path, "a noise model (sonarcarve-cli noise-model)");
   NoiseModel model;
   try {
     cv::FileStorage fs(file, cv::FileStorage::READ);

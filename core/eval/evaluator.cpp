@@ -15,6 +15,7 @@
 #include "common/error.h"
 #include "common/thread_pool.h"
 #include "geometry/internal/vtk_mesh.h"
+#include "io/finite_points.h"
 
 namespace sonarcarve {
 namespace {
@@ -143,14 +144,34 @@ std::vector<std::size_t> MeshDistance::nearestTriangles(
   return nearest;
 }
 
+namespace {
+
+// Divisions of a triangle's sides at `spacing_m`: its longest side over the spacing, at least 1.
+double divisions(const Scene& mesh, const std::array<std::uint32_t, 3>& t, double spacing_m) {
+  const Eigen::Vector3f ab = mesh.vertices[t[1]] - mesh.vertices[t[0]];
+  const Eigen::Vector3f ac = mesh.vertices[t[2]] - mesh.vertices[t[0]];
+  const double longest = std::max({ab.norm(), ac.norm(), (ab - ac).norm()});
+  return std::max(1.0, std::ceil(longest / spacing_m));
+}
+
+}  // namespace
+
+double sampleCount(const Scene& mesh, double spacing_m) {
+  double count = 0.0;
+  for (const auto& t : mesh.triangles) {
+    const double n = divisions(mesh, t, spacing_m);
+    count += (n + 1.0) * (n + 2.0) / 2.0;
+  }
+  return count;
+}
+
 std::vector<Eigen::Vector3f> sampleSurface(const Scene& mesh, double spacing_m) {
   std::vector<Eigen::Vector3f> points;
   for (const auto& t : mesh.triangles) {
     const Eigen::Vector3f a = mesh.vertices[t[0]];
     const Eigen::Vector3f ab = mesh.vertices[t[1]] - a;
     const Eigen::Vector3f ac = mesh.vertices[t[2]] - a;
-    const double longest = std::max({ab.norm(), ac.norm(), (ab - ac).norm()});
-    const int n = std::max(1, static_cast<int>(std::ceil(longest / spacing_m)));
+    const int n = static_cast<int>(divisions(mesh, t, spacing_m));
     for (int i = 0; i <= n; ++i) {
       for (int j = 0; i + j <= n; ++j) {
         points.push_back(a + (static_cast<float>(i) / n) * ab + (static_cast<float>(j) / n) * ac);
@@ -169,10 +190,27 @@ EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, co
   if (reconstruction.empty()) {
     throw Error("evaluation", "reconstruction", "the reconstruction has no points");
   }
-  if (reference_points.empty()) {
-    reference_points = sampleSurface(mesh, 0.01);
+  if (!(tau_m > 0.0) || !std::isfinite(tau_m)) {
+    throw Error("evaluation", "tau", "expected a positive distance in metres");
+  }
+  // A NaN is within no distance and beyond none: it would make the figures depend on the order.
+  for (std::size_t i = 0; i < reconstruction.size(); ++i) {
+    requireFinitePoint(reconstruction[i], "evaluation",
+                       "reconstruction point " + std::to_string(i));
+  }
+  for (std::size_t i = 0; i < reference_points.size(); ++i) {
+    requireFinitePoint(reference_points[i], "evaluation", "visible point " + std::to_string(i));
   }
   EvaluationResult r;
+  if (reference_points.empty()) {
+    // Each triangle gives at least its 3 corners, whatever the spacing.
+    const double fewest = 3.0 * static_cast<double>(mesh.triangles.size());
+    r.reference_spacing_m = 0.01;
+    while (sampleCount(mesh, r.reference_spacing_m) > std::max(kMaxReferenceSamples, fewest)) {
+      r.reference_spacing_m *= 1.25;
+    }
+    reference_points = sampleSurface(mesh, r.reference_spacing_m);
+  }
   r.tau_m = tau_m;
   r.reconstructed_points = reconstruction.size();
   r.reference_points = reference_points.size();
@@ -226,7 +264,8 @@ std::string EvaluationResult::toJson() const {
                         {"reference_points_other", reference_points_other},
                         {"fscore", fscore},
                         {"chamfer_m", chamfer_m},
-                        {"floating_points_over_10cm", floating_points}}
+                        {"floating_points_over_10cm", floating_points},
+                        {"reference_spacing_m", reference_spacing_m}}
       .dump(2);
 }
 

@@ -42,7 +42,10 @@ struct EvaluationResult {
   std::size_t reference_points_other = 0;
   double fscore = 0.0;
   double chamfer_m = 0.0;
-  std::size_t floating_points = 0;    ///< reconstructed points farther than 10 cm from the mesh
+  std::size_t floating_points = 0;  ///< reconstructed points farther than 10 cm from the mesh
+  /// Spacing of the points sampled on the mesh for completeness (0: reference points given).
+  /// Completeness is measured to this resolution.
+  double reference_spacing_m = 0.0;
   std::vector<float> point_errors_m;  ///< per reconstructed point
 
   std::string toJson() const;
@@ -74,13 +77,21 @@ class MeshDistance {
   ThreadPool& pool_;
 };
 
-/// `reference_points` may be empty: the mesh is then sampled every 1 cm. Distances are
-/// computed in parallel on `pool`.
+/// At most this many points are sampled on a mesh (or 3 a triangle for a mesh of more than 1.3
+/// million triangles): a larger mesh is sampled more coarsely and the spacing used is reported
+/// (reference_spacing_m), so that evaluation time and memory stay bounded whatever the mesh's
+/// size (a 1 km triangle at 1 cm would be 5e9 points).
+inline constexpr double kMaxReferenceSamples = 4.0e6;
+
+/// `reference_points` may be empty: the mesh is then sampled every 1 cm, or more coarsely to
+/// stay under kMaxReferenceSamples. Distances are computed in parallel on `pool`.
 EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, const Scene& mesh,
                           std::vector<Eigen::Vector3f> reference_points, ThreadPool& pool,
                           double tau_m = 0.05);
 
 /// Points spread over the mesh surface about every `spacing_m` (deterministic).
 std::vector<Eigen::Vector3f> sampleSurface(const Scene& mesh, double spacing_m);
+/// How many points sampleSurface(mesh, spacing_m) gives, without making them.
+double sampleCount(const Scene& mesh, double spacing_m);
 
 }  // namespace sonarcarve

@@ -5,17 +5,14 @@
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
-#include <vtkOBJReader.h>
-#include <vtkPLYReader.h>
-#include <vtkPLYWriter.h>
 #include <vtkPointData.h>
 #include <vtkSTLReader.h>
 #include <algorithm>
 
 #include "common/error.h"
 #include "geometry/internal/vtk_mesh.h"
-#include "io/atomic_file.h"
-#include "io/ply_check.h"
+#include "io/input_file.h"
+#include "io/obj_mesh.h"
 #include "io/point_cloud_ply.h"
 
 namespace sonarcarve {
@@ -52,37 +49,46 @@ std::string lowerExtension(const std::filesystem::path& path) {
 
 }  // namespace
 
+namespace {
+
+// STL through VTK's reader (an STL has no vertex indices to get wrong; its coordinates are
+// checked after).
+vtkSmartPointer<vtkPolyData> readStl(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  auto reader = vtkSmartPointer<vtkSTLReader>::New();
+  reader->SetFileName(file.c_str());
+  VtkErrorCatcher errors(reader);
+  reader->Update();
+  vtkSmartPointer<vtkPolyData> poly = reader->GetOutput();
+  if (!errors.message().empty() && (poly == nullptr || poly->GetNumberOfCells() == 0)) {
+    throw Error(file, "", "cannot read mesh: " + errors.message());
+  }
+  if (poly != nullptr) {
+    requireValidPolyData(poly, file);
+  }
+  return poly;
+}
+
+}  // namespace
+
 Scene loadSceneMesh(const std::filesystem::path& path, float reflectivity) {
   const std::string file = path.string();
-  if (!std::filesystem::is_regular_file(path)) {
-    throw Error(file, "", "scene mesh not found");
-  }
+  requireRegularFile(path, "a mesh: STL, OBJ or PLY");
   if (std::filesystem::file_size(path) == 0) {
     throw Error(file, "byte 0", "empty file: expected an STL, OBJ or PLY mesh");
   }
   const std::string ext = lowerExtension(path);
-  vtkSmartPointer<vtkAlgorithm> reader;
+  vtkSmartPointer<vtkPolyData> poly;
   if (ext == ".stl") {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(file.c_str());
-    reader = r;
+    poly = readStl(path);
   } else if (ext == ".obj") {
-    auto r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(file.c_str());
-    reader = r;
+    const ObjMesh obj = readObjMesh(path);
+    poly = triangleMesh(obj.vertices, obj.triangles);
   } else if (ext == ".ply") {
-    checkPlyFile(path);
-    auto r = vtkSmartPointer<vtkPLYReader>::New();
-    r->SetFileName(file.c_str());
-    reader = r;
+    const PlyMesh ply = readPlyMesh(path);
+    poly = triangleMesh(ply.vertices.positions, ply.triangles);
   } else {
     throw Error(file, "", "unknown mesh type '" + ext + "': expected .stl, .obj or .ply");
-  }
-  VtkErrorCatcher errors(reader);
-  reader->Update();
-  auto* poly = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!errors.message().empty() && (poly == nullptr || poly->GetNumberOfCells() == 0)) {
-    throw Error(file, "", "cannot read mesh: " + errors.message());
   }
   if (poly == nullptr || poly->GetNumberOfPolys() == 0) {
     throw Error(file, "", "no triangles in the mesh (corrupt, truncated or empty?)");
@@ -93,16 +99,9 @@ Scene loadSceneMesh(const std::filesystem::path& path, float reflectivity) {
 }
 
 void writeScenePly(const Scene& scene, const std::filesystem::path& path) {
-  auto poly = polyDataFromScene(scene);
-  replaceFileAtomically(path, [&](const std::filesystem::path& tmp) {
-    auto writer = vtkSmartPointer<vtkPLYWriter>::New();
-    writer->SetFileName(tmp.string().c_str());
-    writer->SetInputData(poly);
-    writer->SetFileTypeToBinary();
-    if (writer->Write() != 1) {
-      throw Error(path.string(), "", "PLY writer failed");
-    }
-  });
+  PointCloud vertices;
+  vertices.positions = scene.vertices;
+  writePointCloudPly(path, vertices, {}, scene.triangles);
 }
 
 void writePointsPly(const std::vector<Eigen::Vector3f>& points, const std::filesystem::path& path,

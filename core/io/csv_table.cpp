@@ -2,10 +2,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "common/error.h"
+#include "io/input_file.h"
 
 namespace sonarcarve {
 namespace {
@@ -35,18 +34,13 @@ std::vector<std::string> splitCells(const std::string& line, char delimiter) {
 }  // namespace
 
 CsvTable CsvTable::read(const std::filesystem::path& path, const CsvOptions& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw Error(path.string(), "", "cannot open file (missing or unreadable)");
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), path.string(), options);
+  return parse(readInputFile(path, "a CSV table"), path.string(), options);
 }
 
 CsvTable CsvTable::parse(std::string_view text, std::string file, const CsvOptions& options) {
   CsvTable table;
   table.file_ = std::move(file);
+  text = withoutByteOrderMark(text);
   int line_number = 0;
   std::size_t start = 0;
   while (start < text.size()) {

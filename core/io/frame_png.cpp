@@ -1,17 +1,44 @@
 #include "io/frame_png.h"
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
+#include <cstdint>
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
 #include "common/error.h"
+#include "common/input_limits.h"
+#include "io/input_file.h"
 
 namespace sonarcarve {
 namespace {
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 constexpr unsigned char kPngEnd[8] = {'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+
+std::uint32_t bigEndian32(const std::vector<unsigned char>& bytes, std::size_t at) {
+  return (std::uint32_t{bytes[at]} << 24) | (std::uint32_t{bytes[at + 1]} << 16) |
+         (std::uint32_t{bytes[at + 2]} << 8) | std::uint32_t{bytes[at + 3]};
+}
+
+// The image size from the IHDR chunk (bytes 16 to 23), checked before the decoder allocates.
+void requireFrameSize(const std::vector<unsigned char>& bytes, const std::string& file) {
+  constexpr std::size_t kIhdrEnd = 24;
+  if (bytes.size() < kIhdrEnd || std::string(bytes.begin() + 12, bytes.begin() + 16) != "IHDR") {
+    throw Error(file, "byte 12", "corrupt PNG: expected the IHDR chunk first");
+  }
+  const std::uint32_t width = bigEndian32(bytes, 16);
+  const std::uint32_t height = bigEndian32(bytes, 20);
+  if (width > static_cast<std::uint32_t>(kMaxBeams) ||
+      height > static_cast<std::uint32_t>(kMaxRangeBins) ||
+      std::int64_t{width} * height > kMaxFramePixels) {
+    throw Error(file, "byte 16",
+                "image is " + std::to_string(height) + " x " + std::to_string(width) +
+                    " (rows x cols): expected at most " + std::to_string(kMaxRangeBins) +
+                    " range bins x " + std::to_string(kMaxBeams) + " beams and " +
+                    std::to_string(kMaxFramePixels) + " pixels");
+  }
+}
+
 }  // namespace
 
 std::string encodeFramePng(const cv::Mat& image, const std::string& what) {
@@ -40,12 +67,8 @@ std::string encodeFramePng(const cv::Mat& image, const std::string& what) {
 
 cv::Mat readFramePng(const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw Error(file, "", "cannot open frame image (missing or unreadable)");
-  }
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                   std::istreambuf_iterator<char>());
+  const std::string content = readInputFile(path, "a 16-bit PNG frame image");
+  const std::vector<unsigned char> bytes(content.begin(), content.end());
   if (bytes.empty()) {
     throw Error(file, "byte 0", "empty file: expected a PNG image");
   }
@@ -58,6 +81,7 @@ cv::Mat readFramePng(const std::filesystem::path& path) {
     throw Error(file, bytePlace(bytes.size()),
                 "truncated PNG: expected the IEND chunk at the end of the file");
   }
+  requireFrameSize(bytes, file);
   cv::Mat decoded;
   try {
     decoded = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);

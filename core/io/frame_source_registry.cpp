@@ -4,6 +4,7 @@
 #include "common/error.h"
 #include "io/frame_source.h"
 #include "io/import.h"
+#include "io/input_file.h"
 #include "io/nav_import.h"
 
 namespace sonarcarve {
@@ -47,6 +48,9 @@ Mission openMission(const std::filesystem::path& path, const OpenOptions& option
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
     throw Error(path.string(), "", "no such file or folder");
+  }
+  if (!std::filesystem::is_directory(path, ec)) {
+    requireRegularFile(path, "a mission folder or a recording file");
   }
   std::string known;
   for (const FrameSourceReader& reader : readers()) {

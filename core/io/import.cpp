@@ -147,6 +147,9 @@ ImportReport importOculusToMission(const ImportRequest& request, Progress& progr
                               "offset): they cannot be placed in the world");
   }
   std::error_code ec;
+  if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_directory(request.out, ec)) {
+    throw Error(request.out.string(), "", "is a file: expected a new or empty folder");
+  }
   if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_empty(request.out, ec)) {
     throw Error(request.out.string(), "",
                 "output folder exists and is not empty: choose a new folder");

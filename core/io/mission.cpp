@@ -11,7 +11,35 @@
 namespace sonarcarve {
 namespace {
 
-std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& path) {
+// A frame file named by a relative path that does not climb out with "..": what a mission folder
+// that is copied or shared needs, and what keeps it from reading files elsewhere on the machine.
+bool staysInsideFolder(const std::string& file) {
+  const std::filesystem::path relative(file);
+  if (relative.has_root_path()) {
+    return false;
+  }
+  for (const auto& part : relative.lexically_normal()) {
+    if (part == "..") {
+      return false;
+    }
+  }
+  return true;
+}
+
+// frames.files_outside_folder: "refused" (the default) or "allowed".
+bool allowsFilesOutside(const YAML::Node& frames_node, const YamlFields& fields) {
+  const YAML::Node node = frames_node["files_outside_folder"];
+  if (!node) {
+    return false;
+  }
+  const std::string value = fields.text(node, "frames.files_outside_folder");
+  if (value != "allowed" && value != "refused") {
+    fields.fail(node, "frames.files_outside_folder", "expected 'allowed' or 'refused'");
+  }
+  return value == "allowed";
+}
+
+std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& path, bool allow_outside) {
   const CsvTable table = CsvTable::read(path);
   const std::size_t t = table.column("time_s");
   const std::size_t id = table.column("sonar_id");
@@ -22,6 +50,12 @@ std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& path) {
     FrameRecord record{table.number(row, t), table.text(row, id), table.text(row, file), row.line};
     if (record.file.empty()) {
       throw Error(table.file(), linePlace(row.line), "column 'file': expected a file name");
+    }
+    if (!allow_outside && !staysInsideFolder(record.file)) {
+      throw Error(table.file(), linePlace(row.line),
+                  "column 'file': '" + record.file +
+                      "' leaves the mission folder: expected a path inside it (or "
+                      "frames.files_outside_folder: allowed in mission.yaml)");
     }
     if (!frames.empty() && record.time_s < frames.back().time_s) {
       throw Error(table.file(), linePlace(row.line),
@@ -73,7 +107,8 @@ class MissionFolderSource final : public FrameSource {
 bool looksLikeMission(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
-    return std::filesystem::is_regular_file(path / kMissionFileName, ec);
+    // Any mission.yaml, so that one that is not a regular file is read and refused with why.
+    return std::filesystem::exists(path / kMissionFileName, ec);
   }
   return path.filename() == kMissionFileName && std::filesystem::is_regular_file(path, ec);
 }
@@ -124,7 +159,8 @@ Mission readMission(const std::filesystem::path& folder_or_yaml) {
   }
 
   NavTrack nav = readNavCsv(folder / nav_file);
-  std::vector<FrameRecord> frames = readFrameIndex(folder / index_file);
+  std::vector<FrameRecord> frames =
+      readFrameIndex(folder / index_file, allowsFilesOutside(frames_node, fields));
   Mission mission{
       folder,   std::move(name), std::move(sonar), mounting, std::move(nav), std::move(frames),
       nav_file, index_file,      nullptr,          {}};

@@ -7,6 +7,7 @@
 #include "io/atomic_file.h"
 #include "io/frame_png.h"
 #include "io/nav_csv.h"
+#include "io/output_folder.h"
 #include "io/sonar_yaml.h"
 #include "io/yaml_fields.h"
 
@@ -18,11 +19,7 @@ MissionWriter::MissionWriter(std::filesystem::path folder, std::string name, Son
       name_(std::move(name)),
       sonar_(std::move(sonar)),
       mounting_(mounting) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder_ / "frames", ec);
-  if (ec) {
-    throw Error(folder_.string(), "", "cannot create mission folder: " + ec.message());
-  }
+  prepareOutputFolder(folder_ / "frames");
 }
 
 void MissionWriter::addFrame(const Frame& frame) {

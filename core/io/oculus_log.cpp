@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "io/input_file.h"
 
 namespace sonarcarve {
 
@@ -106,7 +107,8 @@ std::string itemName(std::uint16_t type) {
 std::shared_ptr<OculusLog::Storage> mapFile(const std::filesystem::path& path) {
   const std::string file = path.string();
   auto storage = std::make_shared<OculusLog::Storage>();
-  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  requireRegularFile(path, "an Oculus log");
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) {
     throw Error(file, "", "cannot open file (missing or unreadable)");
   }

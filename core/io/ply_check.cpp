@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "io/input_file.h"
 
 namespace sonarcarve {
 int plyTypeSize(const std::string& type) {
@@ -24,6 +25,7 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
     return static_cast<std::uint64_t>(plyTypeSize(type));
   };
   const std::string file = path.string();
+  requireRegularFile(path, "a PLY file");
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw Error(file, "", "cannot open PLY file");

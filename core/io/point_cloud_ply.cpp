@@ -1,22 +1,20 @@
 #include "io/point_cloud_ply.h"
 
 #include <bit>
+#include <charconv>
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "common/error.h"
 #include "io/atomic_file.h"
+#include "io/finite_points.h"
 #include "io/ply_check.h"
 
 namespace sonarcarve {
 namespace {
-
-struct Property {
-  std::string name;
-  std::string type;
-  int size = 0;
-};
 
 double decode(const char* bytes, const std::string& type, bool swap) {
   char b[8];
@@ -48,7 +46,8 @@ double decode(const char* bytes, const std::string& type, bool swap) {
 }  // namespace
 
 void writePointCloudPly(const std::filesystem::path& path, const PointCloud& cloud,
-                        const std::map<std::string, std::vector<std::uint32_t>>& uint_properties) {
+                        const std::map<std::string, std::vector<std::uint32_t>>& uint_properties,
+                        const Triangles& triangles) {
   const std::size_t n = cloud.positions.size();
   for (const auto& [name, values] : cloud.properties) {
     if (values.size() != n) {
@@ -70,6 +69,9 @@ void writePointCloudPly(const std::filesystem::path& path, const PointCloud& clo
   for (const auto& entry : uint_properties) {
     out << "property uint " << entry.first << "\n";
   }
+  if (!triangles.empty()) {
+    out << "element face " << triangles.size() << "\nproperty list uchar int vertex_indices\n";
+  }
   out << "end_header\n";
   std::string bytes = out.str();
   const std::size_t record = 4 * (3 + cloud.properties.size() + uint_properties.size());
@@ -89,85 +91,183 @@ void writePointCloudPly(const std::filesystem::path& path, const PointCloud& clo
       p += 4;
     }
   }
+  for (const auto& t : triangles) {
+    bytes.push_back(3);
+    for (const std::uint32_t v : t) {
+      const auto index = static_cast<std::int32_t>(v);
+      bytes.append(reinterpret_cast<const char*>(&index), 4);
+    }
+  }
   writeFileAtomically(path, bytes);
 }
 
-PointCloud readPointCloudPly(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  if (!std::filesystem::is_regular_file(path)) {
-    throw Error(file, "", "point cloud not found");
+namespace {
+
+// Reads values of PLY scalar types from the body: words of text, or binary in either order.
+class PlyValues {
+ public:
+  PlyValues(std::istream& in, const std::string& format)
+      : in_(in), ascii_(format == "ascii"), swap_(format == "binary_big_endian") {}
+
+  /// False at the end of the body or on a word that is not a number ("nan" and "inf" are
+  /// numbers here, so that they reach the finiteness check and its message).
+  bool read(const std::string& type, double& value) {
+    if (ascii_) {
+      std::string word;
+      if (!(in_ >> word)) {
+        return false;
+      }
+      const char* end = word.data() + word.size();
+      const auto [ptr, ec] = std::from_chars(word.data(), end, value);
+      return ec == std::errc() && ptr == end;
+    }
+    char bytes[8];
+    if (!in_.read(bytes, plyTypeSize(type))) {
+      return false;
+    }
+    value = decode(bytes, type, swap_);
+    return true;
   }
-  const PlyHeader header = checkPlyFile(path);  // well formed, body long enough
-  if (header.elements.empty() || header.elements.front().name != "vertex") {
-    throw Error(file, "header", "expected the vertex element first");
-  }
-  const std::string& format = header.format;
-  const auto count = static_cast<std::size_t>(header.elements.front().count);
-  std::vector<Property> props;
-  for (const PlyProperty& p : header.elements.front().properties) {
+
+ private:
+  std::istream& in_;
+  bool ascii_;
+  bool swap_;
+};
+
+PointCloud readVertices(const std::string& file, const PlyElement& element, PlyValues& values) {
+  const auto count = static_cast<std::size_t>(element.count);
+  int ix = -1, iy = -1, iz = -1;
+  for (std::size_t k = 0; k < element.properties.size(); ++k) {
+    const PlyProperty& p = element.properties[k];
     if (p.list) {
       throw Error(file, "header", "list property on vertices");
     }
-    props.push_back({p.name, p.type, plyTypeSize(p.type)});
-  }
-  std::ifstream in(path, std::ios::binary);
-  in.seekg(static_cast<std::streamoff>(header.body_offset));
-  int ix = -1, iy = -1, iz = -1;
-  for (std::size_t k = 0; k < props.size(); ++k) {
-    if (props[k].name == "x")
-      ix = static_cast<int>(k);
-    if (props[k].name == "y")
-      iy = static_cast<int>(k);
-    if (props[k].name == "z")
-      iz = static_cast<int>(k);
+    const int index = static_cast<int>(k);
+    if (p.name == "x") {
+      ix = index;
+    } else if (p.name == "y") {
+      iy = index;
+    } else if (p.name == "z") {
+      iz = index;
+    }
   }
   if (ix < 0 || iy < 0 || iz < 0) {
     throw Error(file, "header", "expected a vertex element with x, y and z");
   }
   PointCloud cloud;
   cloud.positions.resize(count);
-  for (const auto& p : props) {
+  for (const PlyProperty& p : element.properties) {
     if (p.name != "x" && p.name != "y" && p.name != "z") {
       cloud.properties[p.name].resize(count);
     }
   }
-  std::vector<double> values(props.size());
-  const bool ascii = format == "ascii";
-  const bool swap = format == "binary_big_endian";
-  std::size_t record = 0;
-  for (const auto& p : props)
-    record += static_cast<std::size_t>(p.size);
-  std::vector<char> buffer(record);
+  std::vector<double> v(element.properties.size());
   for (std::size_t i = 0; i < count; ++i) {
-    if (ascii) {
-      for (auto& v : values) {
-        if (!(in >> v)) {
-          throw Error(file, "vertex " + std::to_string(i),
-                      "expected " + std::to_string(props.size()) + " numbers");
-        }
-      }
-    } else {
-      if (!in.read(buffer.data(), static_cast<std::streamsize>(record))) {
-        throw Error(file, "vertex " + std::to_string(i), "file ends inside the vertex data");
-      }
-      std::size_t offset = 0;
-      for (std::size_t k = 0; k < props.size(); ++k) {
-        values[k] = decode(buffer.data() + offset, props[k].type, swap);
-        offset += static_cast<std::size_t>(props[k].size);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (!values.read(element.properties[k].type, v[k])) {
+        throw Error(file, "vertex " + std::to_string(i),
+                    "expected " + std::to_string(v.size()) +
+                        " numbers (the file ends or holds something else)");
       }
     }
-    cloud.positions[i] =
-        Eigen::Vector3d(values[static_cast<std::size_t>(ix)], values[static_cast<std::size_t>(iy)],
-                        values[static_cast<std::size_t>(iz)])
-            .cast<float>();
-    for (std::size_t k = 0; k < props.size(); ++k) {
-      auto it = cloud.properties.find(props[k].name);
+    const auto at = [&](int k) { return v[static_cast<std::size_t>(k)]; };
+    cloud.positions[i] = Eigen::Vector3d(at(ix), at(iy), at(iz)).cast<float>();
+    requireFinitePoint(cloud.positions[i], file, "vertex " + std::to_string(i));
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      auto it = cloud.properties.find(element.properties[k].name);
       if (it != cloud.properties.end()) {
-        it->second[i] = static_cast<float>(values[k]);
+        it->second[i] = static_cast<float>(v[k]);
       }
     }
   }
   return cloud;
+}
+
+// The corners of one face: the items of its vertex_indices (or vertex_index) list.
+std::vector<double> readCorners(const std::string& file, const std::string& place,
+                                const PlyElement& element, PlyValues& values) {
+  std::vector<double> corners;
+  for (const PlyProperty& p : element.properties) {
+    double count = 0.0;
+    if (!values.read(p.list ? p.count_type : p.type, count)) {
+      throw Error(file, place, "the file ends or holds something else than a number");
+    }
+    if (!p.list) {
+      continue;
+    }
+    if (!(count >= 0.0) || count != std::floor(count)) {
+      throw Error(file, place, "expected a count of vertex indices");
+    }
+    const bool wanted = p.name == "vertex_indices" || p.name == "vertex_index";
+    for (double k = 0; k < count; ++k) {
+      double item = 0.0;
+      if (!values.read(p.type, item)) {
+        throw Error(file, place, "the file ends inside the face's list");
+      }
+      if (wanted) {
+        corners.push_back(item);
+      }
+    }
+  }
+  return corners;
+}
+
+// The face element's polygons as triangles (fans); every index must name a vertex.
+Triangles readFaces(const std::string& file, const PlyElement& element, std::size_t vertices,
+                    PlyValues& values) {
+  Triangles triangles;
+  for (std::uint64_t f = 0; f < element.count; ++f) {
+    const std::string place = "face " + std::to_string(f);
+    const std::vector<double> corners = readCorners(file, place, element, values);
+    if (corners.size() < 3) {
+      throw Error(file, place, "expected at least 3 vertex indices");
+    }
+    for (const double c : corners) {
+      if (!(c >= 0.0 && c < static_cast<double>(vertices)) || c != std::floor(c)) {
+        std::ostringstream found;
+        found << std::setprecision(20) << c;  // whole numbers in full
+        throw Error(file, place,
+                    "vertex index " + found.str() + " out of range: expected 0 to " +
+                        std::to_string(vertices - 1));
+      }
+    }
+    const auto index = [&](std::size_t k) { return static_cast<std::uint32_t>(corners[k]); };
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+      triangles.push_back({index(0), index(k), index(k + 1)});
+    }
+  }
+  return triangles;
+}
+
+PlyMesh readPly(const std::filesystem::path& path, bool with_faces) {
+  const std::string file = path.string();
+  const PlyHeader header = checkPlyFile(path);  // a regular file, well formed, body long enough
+  if (header.elements.empty() || header.elements.front().name != "vertex") {
+    throw Error(file, "header", "expected the vertex element first");
+  }
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(header.body_offset));
+  PlyValues values(in, header.format);
+  PlyMesh mesh;
+  mesh.vertices = readVertices(file, header.elements.front(), values);
+  if (with_faces) {
+    if (header.elements.size() < 2 || header.elements[1].name != "face") {
+      throw Error(file, "header", "expected a face element after the vertices");
+    }
+    mesh.triangles = readFaces(file, header.elements[1], mesh.vertices.positions.size(), values);
+  }
+  return mesh;
+}
+
+}  // namespace
+
+PointCloud readPointCloudPly(const std::filesystem::path& path) {
+  return readPly(path, false).vertices;
+}
+
+PlyMesh readPlyMesh(const std::filesystem::path& path) {
+  return readPly(path, true);
 }
 
 }  // namespace sonarcarve

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -17,11 +19,24 @@ struct PointCloud {
   std::map<std::string, std::vector<float>> properties;  ///< one value per point
 };
 
-/// `uint_properties` are written as uint32. Throws Error if a property's size differs.
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+/// `uint_properties` are written as uint32; `triangles`, when given, as a face element (a
+/// mesh). Throws Error if a property's size differs.
 void writePointCloudPly(
     const std::filesystem::path& path, const PointCloud& cloud,
-    const std::map<std::string, std::vector<std::uint32_t>>& uint_properties = {});
-/// Throws Error naming the file and the place on a missing, truncated or malformed file.
+    const std::map<std::string, std::vector<std::uint32_t>>& uint_properties = {},
+    const Triangles& triangles = {});
+/// Throws Error naming the file and the place on a missing, truncated or malformed file, or a
+/// vertex that is not finite.
 PointCloud readPointCloudPly(const std::filesystem::path& path);
+
+struct PlyMesh {
+  PointCloud vertices;
+  Triangles triangles;
+};
+/// A mesh: the vertices as readPointCloudPly reads them, then the face element, polygons split
+/// into triangles. Throws Error naming the face whose vertex index is out of range.
+PlyMesh readPlyMesh(const std::filesystem::path& path);
 
 }  // namespace sonarcarve

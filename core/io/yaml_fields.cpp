@@ -2,30 +2,21 @@
 
 #include <charconv>
 #include <cmath>
-#include <filesystem>
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "io/input_file.h"
 
 namespace sonarcarve {
 
 YAML::Node YamlFields::load() const {
-  if (!std::filesystem::is_regular_file(file_)) {
-    throw Error(file_, "", "file not found");
-  }
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file_);
-  } catch (const YAML::Exception& e) {
-    throw Error(file_, linePlace(e.mark.line + 1), "not valid YAML: " + e.msg);
-  }
-  return mapping(root);
+  return parse(readInputFile(file_, "a YAML file"));
 }
 
 YAML::Node YamlFields::parse(const std::string& text) const {
   YAML::Node root;
   try {
-    root = YAML::Load(text);
+    root = YAML::Load(std::string(withoutByteOrderMark(text)));
   } catch (const YAML::Exception& e) {
     throw Error(file_, linePlace(e.mark.line + 1), "not valid YAML: " + e.msg);
   }

@@ -1,20 +1,9 @@
 #include "mesh/mesh_export.h"
 
-#include <vtkCellArray.h>
-#include <vtkFloatArray.h>
-#include <vtkIdList.h>
-#include <vtkOBJWriter.h>
-#include <vtkPLYReader.h>
-#include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkSTLWriter.h>
-#include <vtkSmartPointer.h>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
 #include "common/error.h"
-#include "geometry/internal/vtk_mesh.h"
 #include "io/atomic_file.h"
 #include "io/ply_check.h"
 #include "io/point_cloud_ply.h"
@@ -103,17 +92,48 @@ std::string plyText(const Mesh& m, bool ascii) {
   return bytes;
 }
 
-vtkSmartPointer<vtkPolyData> polyData(const Mesh& m) {
-  auto poly = triangleMesh(m.vertices, m.triangles);
-  auto normals = vtkSmartPointer<vtkFloatArray>::New();
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(static_cast<vtkIdType>(m.normals.size()));
-  for (std::size_t i = 0; i < m.normals.size(); ++i) {
-    normals->SetTuple3(static_cast<vtkIdType>(i), m.normals[i].x(), m.normals[i].y(),
-                       m.normals[i].z());
+// Binary STL: an 80-byte header, the triangle count, then per triangle its normal, its three
+// corners (float32, little-endian) and a zero attribute word.
+std::string stlBytes(const Mesh& m) {
+  std::string bytes(80, ' ');
+  bytes.replace(0, 30, "SonarCarve mesh, metres       ");
+  const auto append = [&](const void* data, std::size_t n) {
+    bytes.append(static_cast<const char*>(data), n);
+  };
+  const auto count = static_cast<std::uint32_t>(m.triangles.size());
+  append(&count, 4);
+  for (const auto& t : m.triangles) {
+    const Eigen::Vector3f& a = m.vertices[t[0]];
+    const Eigen::Vector3f normal = (m.vertices[t[1]] - a).cross(m.vertices[t[2]] - a).normalized();
+    append(normal.data(), 12);
+    for (std::uint32_t v : t) {
+      append(m.vertices[v].data(), 12);
+    }
+    const std::uint16_t attribute = 0;
+    append(&attribute, 2);
   }
-  poly->GetPointData()->SetNormals(normals);
-  return poly;
+  return bytes;
+}
+
+// Wavefront OBJ: vertices, vertex normals, and faces numbered from 1.
+std::string objText(const Mesh& m) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "# SonarCarve mesh, metres\n";
+  for (const auto& v : m.vertices) {
+    out << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+  }
+  for (const auto& n : m.normals) {
+    out << "vn " << n.x() << ' ' << n.y() << ' ' << n.z() << '\n';
+  }
+  for (const auto& t : m.triangles) {
+    out << 'f';
+    for (std::uint32_t v : t) {
+      out << ' ' << v + 1 << "//" << v + 1;
+    }
+    out << '\n';
+  }
+  return out.str();
 }
 
 }  // namespace
@@ -143,29 +163,13 @@ void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const Expor
   if (m.triangles.empty()) {
     throw Error(path.string(), "", "no triangle to export (empty mesh or crop box)");
   }
-  if (options.format == "ply" || options.format == "ply-ascii") {
+  if (options.format == "stl") {
+    writeFileAtomically(path, stlBytes(m));
+  } else if (options.format == "obj") {
+    writeFileAtomically(path, objText(m));
+  } else {
     writeFileAtomically(path, plyText(m, options.format == "ply-ascii"));
-    return;
   }
-  auto poly = polyData(m);
-  replaceFileAtomically(path, [&](const std::filesystem::path& tmp) {
-    int ok = 0;
-    if (options.format == "stl") {
-      auto writer = vtkSmartPointer<vtkSTLWriter>::New();
-      writer->SetFileName(tmp.string().c_str());
-      writer->SetInputData(poly);
-      writer->SetFileTypeToBinary();
-      ok = writer->Write();
-    } else {
-      auto writer = vtkSmartPointer<vtkOBJWriter>::New();
-      writer->SetFileName(tmp.string().c_str());
-      writer->SetInputData(poly);
-      ok = writer->Write();
-    }
-    if (ok != 1) {
-      throw Error(path.string(), "", "the " + options.format + " writer failed");
-    }
-  });
 }
 
 void exportPoints(const SurfacePoints& points, const std::filesystem::path& path,
@@ -197,11 +201,8 @@ void exportPoints(const SurfacePoints& points, const std::filesystem::path& path
 }
 
 Mesh readMeshPly(const std::filesystem::path& path) {
-  const PointCloud cloud = readPointCloudPly(path);  // vertices and their properties
-  auto reader = vtkSmartPointer<vtkPLYReader>::New();
-  reader->SetFileName(path.string().c_str());
-  reader->Update();
-  vtkPolyData* poly = reader->GetOutput();
+  const PlyMesh ply = readPlyMesh(path);
+  const PointCloud& cloud = ply.vertices;  // positions and their properties
   Mesh mesh;
   mesh.vertices = cloud.positions;
   const auto property = [&](const char* name) {
@@ -216,7 +217,7 @@ Mesh readMeshPly(const std::filesystem::path& path) {
     mesh.normals.emplace_back(nx[i], ny[i], nz[i]);
     mesh.views.push_back(static_cast<std::uint32_t>(views[i]));
   }
-  mesh.triangles = trianglesOf(poly);
+  mesh.triangles = ply.triangles;
   if (mesh.triangles.empty()) {
     throw Error(path.string(), "", "no triangles: expected a mesh PLY");
   }

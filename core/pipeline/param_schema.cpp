@@ -238,7 +238,7 @@ std::vector<ParamSpec> makeSchema() {
       {.key = "elevation_step_deg",
        .unit = "degrees",
        .degrees = true,
-       .range = kPositive,
+       .range = {.min = 0.01, .max = 90.0},
        .help = "step along each pixel's elevation arc (reference engine) and in occlusion "
                "resolution",
        .flag = "--elevation-step",

@@ -10,6 +10,7 @@
 #include "common/error.h"
 #include "pipeline/carve_stage.h"
 #include "pipeline/frame_stage.h"
+#include "pipeline/size_limits.h"
 #include "pipeline/surface_stage.h"
 
 namespace sonarcarve {
@@ -63,6 +64,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   CarveStageParams stage{params_.engine, params_.carve, params_.occlusion_aware_carving};
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
+  requireBoundedSizes(bounds, sonar_, params_.carve);
   NoiseChoice noise;
   try {
     noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);

@@ -42,7 +42,7 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
   }
   std::error_code ec;
   const auto truth = mission.folder / "ground_truth.ply";
-  if (std::filesystem::is_regular_file(truth, ec) && !result.surface.empty()) {
+  if (std::filesystem::exists(truth, ec) && !result.surface.empty()) {
     const std::vector<Eigen::Vector3f> points = positionsOf(result.surface);
     // Ground truth read once, for the points and for the mesh.
     const Scene truth_mesh = loadSceneMesh(truth);

@@ -6,14 +6,26 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/input_limits.h"
 
 namespace sonarcarve {
+namespace {
+
+void requireBeamCount(std::size_t beams) {
+  if (beams > static_cast<std::size_t>(kMaxBeams)) {
+    throw Error("sonar model", "bearings",
+                std::to_string(beams) + " beams: expected at most " + std::to_string(kMaxBeams));
+  }
+}
+
+}  // namespace
 
 BearingTable BearingTable::uniform(double fov_rad, int beams) {
   if (beams < 1 || !(fov_rad > 0.0) || !std::isfinite(fov_rad)) {
     throw Error("sonar model", "bearings",
                 "expected a positive field of view and at least one beam");
   }
+  requireBeamCount(static_cast<std::size_t>(beams));
   std::vector<double> centres(static_cast<std::size_t>(beams));
   const double step = fov_rad / beams;
   for (int j = 0; j < beams; ++j) {
@@ -32,6 +44,7 @@ BearingTable BearingTable::fromCentres(std::vector<double> centres_rad) {
   if (centres_rad.empty()) {
     throw Error("sonar model", "bearings", "expected at least one beam");
   }
+  requireBeamCount(centres_rad.size());
   for (std::size_t j = 0; j < centres_rad.size(); ++j) {
     if (!std::isfinite(centres_rad[j])) {
       throw Error("sonar model", "beam " + std::to_string(j), "bearing is not a finite number");

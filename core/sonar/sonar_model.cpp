@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "common/error.h"
+#include "common/input_limits.h"
 
 namespace sonarcarve {
 
@@ -34,6 +36,17 @@ SonarModel::SonarModel(std::string id, RangeBins range, BearingTable bearings,
       beam_pattern_(vertical_aperture_rad) {
   if (range_.count < 1) {
     throw Error("sonar model", "range", "expected at least one range bin");
+  }
+  if (range_.count > kMaxRangeBins) {
+    throw Error("sonar model", "range",
+                std::to_string(range_.count) + " range bins: expected at most " +
+                    std::to_string(kMaxRangeBins));
+  }
+  if (std::int64_t{range_.count} * cols() > kMaxFramePixels) {
+    throw Error("sonar model", "range",
+                std::to_string(range_.count) + " bins x " + std::to_string(cols()) +
+                    " beams: expected at most " + std::to_string(kMaxFramePixels) +
+                    " pixels per frame");
   }
   if (!(range_.resolution_m > 0.0) || !std::isfinite(range_.resolution_m)) {
     throw Error("sonar model", "range", "expected a positive range resolution");

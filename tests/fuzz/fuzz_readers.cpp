@@ -108,6 +108,7 @@ void plyPointCloud(std::span<const std::uint8_t> bytes) {
   write(path, text(bytes));
   acceptingErrors([&] { checkPlyFile(path); });
   acceptingErrors([&] { readPointCloudPly(path); });
+  acceptingErrors([&] { readPlyMesh(path); });
 }
 
 void navImport(std::span<const std::uint8_t> bytes) {

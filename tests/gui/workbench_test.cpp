@@ -172,6 +172,35 @@ class WorkbenchTest : public QObject {
     QVERIFY(waitForResult(window, 120000));
   }
 
+  // Inputs of the bad-input catalogue (docs/reliability.md) through the workbench: a message
+  // naming the file and what was expected, never a crash.
+  void badInputsGiveAMessageNeverACrash() {
+    MainWindow window;
+    window.show();
+    const fs::path bad_nav = sonarcarve::test::copyExampleMission(scratch_->path(), "bad-nav");
+    fs::remove(bad_nav / "nav.csv");
+    fs::create_directories(bad_nav / "nav.csv");
+    QVERIFY(!window.openMission(QString::fromStdString(bad_nav.string())));
+    auto* box = window.findChild<QMessageBox*>("errorMessage");
+    QVERIFY(box && box->isVisible());
+    QVERIFY2(box->text().contains("nav.csv: is a directory: expected a regular file"),
+             qPrintable(box->text()));
+    box->accept();
+    // A ground truth whose face names a vertex that does not exist: VTK's filters read past
+    // the points with it; the workbench says so and carries on without it.
+    const fs::path bad_truth = sonarcarve::test::copyExampleMission(scratch_->path(), "bad-truth");
+    sonarcarve::test::writeText(bad_truth / "ground_truth.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                "property float y\nproperty float z\nelement face 1\n"
+                                "property list uchar int vertex_indices\nend_header\n"
+                                "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+    QVERIFY(window.openMission(QString::fromStdString(bad_truth.string())));
+    QVERIFY2(window.logText().contains("ground_truth.ply: face 0: vertex index 7 out of range"),
+             qPrintable(window.logText()));
+    QVERIFY(waitForResult(window, 120000));
+    QVERIFY(window.isVisible());
+  }
+
   void sessionRestoresMissionParametersAndCamera() {
     const fs::path file = scratch_->path() / "s.sonarcarve";
     sonarcarve::widgets::CameraState camera;

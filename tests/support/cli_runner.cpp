@@ -7,7 +7,10 @@
 namespace sonarcarve::test {
 
 RunResult runCli(const std::string& args) {
-  const std::string command = std::string("'") + SONARCARVE_CLI + "' " + args + " 2>&1";
+  return runShell(std::string("'") + SONARCARVE_CLI + "' " + args + " 2>&1");
+}
+
+RunResult runShell(const std::string& command) {
   RunResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) {

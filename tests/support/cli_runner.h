@@ -13,6 +13,8 @@ struct RunResult {
 
 /// Runs `sonarcarve-cli ARGS` (arguments as a shell would split them).
 RunResult runCli(const std::string& args);
+/// Runs a shell command line, capturing what it prints; `command` redirects stderr if needed.
+RunResult runShell(const std::string& command);
 /// A path quoted for the shell.
 std::string quoted(const std::filesystem::path& path);
 

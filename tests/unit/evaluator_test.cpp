@@ -56,4 +56,21 @@ TEST(Evaluation, SplitsCompletenessByTheOrientationOfTheFaces) {
 }
 
 }  // namespace
+TEST(Evaluate, SamplesALargeReferenceCoarselyAndSaysHowCoarsely) {
+  const Scene plate = test::plate({3, 0, 0}, {-1, 0, 0}, 2.0, 0.8f);
+  EXPECT_EQ(sampleCount(plate, 0.05), static_cast<double>(sampleSurface(plate, 0.05).size()));
+  ThreadPool pool(2);
+  const std::vector<Eigen::Vector3f> points = {{3, 0, 0}, {3, 0.5f, 0.5f}};
+  const EvaluationResult fine = evaluate(points, plate, {}, pool);
+  EXPECT_DOUBLE_EQ(fine.reference_spacing_m, 0.01);
+  Scene big = plate;
+  for (Eigen::Vector3f& v : big.vertices) {
+    v *= 1000.0f;  // 2 km square: 4e10 points at 1 cm
+  }
+  const EvaluationResult coarse = evaluate(points, big, {}, pool);
+  EXPECT_GT(coarse.reference_spacing_m, 0.01);
+  EXPECT_LE(static_cast<double>(coarse.reference_points), kMaxReferenceSamples);
+  EXPECT_EQ(evaluate(points, plate, points, pool).reference_spacing_m, 0.0);
+}
+
 }  // namespace sonarcarve

@@ -47,7 +47,7 @@ class MissionErrors : public ::testing::Test {
 
 TEST_F(MissionErrors, MissingFolderOrYaml) {
   std::filesystem::remove(mission_ / "mission.yaml");
-  expectReadError({"mission.yaml", "file not found"});
+  expectReadError({"mission.yaml: not found: expected a YAML file"});
   EXPECT_THROW(readMission(dir_.path() / "nowhere"), Error);
 }
 
@@ -80,7 +80,7 @@ TEST_F(MissionErrors, InvalidSonarValue) {
 
 TEST_F(MissionErrors, MissingNavigationFile) {
   std::filesystem::remove(mission_ / "nav.csv");
-  expectReadError({"nav.csv", "cannot open"});
+  expectReadError({"nav.csv: not found: expected a CSV table"});
 }
 
 TEST_F(MissionErrors, MissingNavigationColumn) {

@@ -275,7 +275,7 @@ TEST(OculusErrors, EmptyUnrecognisedAndWrongMagic) {
   expectError([&] { decodeOculusPing(bytes, 0, "m"); },
               {"m: byte 0: not an Oculus message: oculusId is 0x4f00"});
   expectError([] { OculusLog::open("/nonexistent/log.raw"); },
-              {"/nonexistent/log.raw", "cannot open"});
+              {"/nonexistent/log.raw: not found: expected an Oculus log"});
   std::vector<std::uint8_t> sqlite = {'S', 'Q', 'L', 'i', 't', 'e', ' ', 'f',
                                       'o', 'r', 'm', 'a', 't', ' ', '3', 0};
   expectError([&] { OculusLog::fromBytes(sqlite, "v2.oculus"); }, {"v2.oculus: byte 0", "SQLite"});

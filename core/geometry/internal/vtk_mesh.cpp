@@ -7,6 +7,9 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkTriangleFilter.h>
 
+#include "common/error.h"
+#include "io/finite_points.h"
+
 namespace sonarcarve {
 
 Scene sceneFromPolyData(vtkPolyData* poly, float reflectivity, const std::string& name) {
@@ -84,6 +87,31 @@ std::vector<std::array<std::uint32_t, 3>> trianglesOf(vtkPolyData* poly) {
     }
   }
   return triangles;
+}
+
+// The filters downstream index points by the faces' vertex ids without a check: an id out of
+// range would read outside the points, and a NaN vertex would poison every distance.
+void requireValidPolyData(vtkPolyData* poly, const std::string& file) {
+  const vtkIdType points = poly->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < points; ++i) {
+    double p[3];
+    poly->GetPoint(i, p);
+    requireFinitePoint(Eigen::Vector3d(p[0], p[1], p[2]).cast<float>(), file,
+                       "vertex " + std::to_string(i));
+  }
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  vtkCellArray* cells = poly->GetPolys();
+  cells->InitTraversal();
+  for (vtkIdType face = 0; cells->GetNextCell(ids); ++face) {
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
+      const vtkIdType id = ids->GetId(k);
+      if (id < 0 || id >= points) {
+        throw Error(file, "face " + std::to_string(face),
+                    "vertex index " + std::to_string(id) + " out of range: expected 0 to " +
+                        std::to_string(points - 1));
+      }
+    }
+  }
 }
 
 }  // namespace sonarcarve

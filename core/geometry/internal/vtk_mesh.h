@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "geometry/scene.h"
@@ -22,6 +23,9 @@ vtkSmartPointer<vtkPolyData> polyDataFromScene(const Scene& scene);
 vtkSmartPointer<vtkPolyData> triangleMesh(
     const std::vector<Eigen::Vector3f>& vertices,
     const std::vector<std::array<std::uint32_t, 3>>& triangles);
+/// Throws Error naming `file` and the vertex or face for a vertex that is not finite or a
+/// face whose vertex index is out of range. Run on every mesh read before any filter sees it.
+void requireValidPolyData(vtkPolyData* poly, const std::string& file);
 /// The triangles of a poly data's polygons (other polygons are skipped).
 std::vector<std::array<std::uint32_t, 3>> trianglesOf(vtkPolyData* poly);
 

@@ -1,0 +1,24 @@
+// Opening an input file. Every reader opens its files through here, so that only a regular file
+// is read where a file is expected: a directory, a FIFO (which blocks until someone writes) or
+// a device such as /dev/zero (which never ends) is refused with an Error naming the file and
+// what was expected, before anything is read or allocated.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace sonarcarve {
+
+/// Throws Error naming `path` unless it is an existing regular file (symbolic links followed).
+/// `what` names the expected content in the message: "navigation CSV", "frame image".
+void requireRegularFile(const std::filesystem::path& path, std::string_view what);
+
+/// The whole content of a regular file (checked as by requireRegularFile, and again on the
+/// opened descriptor). Throws Error naming the file on any failure.
+std::string readInputFile(const std::filesystem::path& path, std::string_view what);
+
+/// `text` without the UTF-8 byte-order mark some editors put at the start of a text file.
+std::string_view withoutByteOrderMark(std::string_view text);
+
+}  // namespace sonarcarve

@@ -1,0 +1,24 @@
+// The bad-input catalogue as GoogleTest cases: one test per case, named by its class and case.
+#include "e2e/catalogue/catalogue.h"
+
+namespace sonarcarve::test {
+
+namespace {
+
+class Catalogue : public ::testing::TestWithParam<CatalogueCase> {};
+
+TEST_P(Catalogue, AnswersAsDocumented) {
+  runCatalogueCase(GetParam());
+}
+
+std::string nameOf(const ::testing::TestParamInfo<CatalogueCase>& info) {
+  return info.param.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(NotAFile, Catalogue, ::testing::ValuesIn(fileKindCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Content, Catalogue, ::testing::ValuesIn(contentCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Limits, Catalogue, ::testing::ValuesIn(limitCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Outputs, Catalogue, ::testing::ValuesIn(outputCases()), nameOf);
+
+}  // namespace
+}  // namespace sonarcarve::test

@@ -1,0 +1,117 @@
+// Class "limits before allocation": sizes read from inputs or parameters are checked against
+// the documented limits (core/common/input_limits.h) before anything is allocated from them.
+#include "e2e/catalogue/catalogue.h"
+
+namespace sonarcarve::test {
+namespace {
+
+CatalogueCase sonarSize(const std::string& name, const std::string& from, const std::string& to,
+                        const std::vector<std::string>& message) {
+  return {.name = name,
+          .prepare =
+              [from, to](const Workspace& ws) {
+                replaceIn(ws.mission() / "mission.yaml", from, to);
+                return std::string("info mission");
+              },
+          .message = message};
+}
+
+CatalogueCase hugeFrame(const std::string& name, std::uint32_t width, std::uint32_t height) {
+  const std::string size = std::to_string(height) + " x " + std::to_string(width);
+  return {.name = name,
+          .prepare =
+              [width, height](const Workspace& ws) {
+                writeBytes(ws.mission() / "frames/000003.png", pngHeader(width, height));
+                return std::string("frame mission --index 3 --polar polar.png");
+              },
+          .message = {"000003.png: byte 16: image is " + size + " (rows x cols): expected at most"},
+          .absent = {"polar.png"}};
+}
+
+std::string tableOf(int beams) {
+  std::string table = "{table_deg: [";
+  for (int j = 0; j < beams; ++j) {
+    table += (j > 0 ? ", " : "") + std::to_string(-30.0 + 60.0 * j / beams);
+  }
+  return table + "]}";
+}
+
+}  // namespace
+
+std::vector<CatalogueCase> limitCases() {
+  return {
+      sonarSize(
+          "SonarWithABillionBeams", "beams: 64}", "beams: 1000000000}",
+          {"mission.yaml: line 8: sonar.bearings", "1000000000 beams: expected at most 4096"}),
+      sonarSize("SonarWithATableOf5000Beams", "{fov_deg: 60, beams: 64}", tableOf(5000),
+                {"mission.yaml: line 8: sonar.bearings", "5000 beams: expected at most 4096"}),
+      sonarSize("SonarWithAHundredMillionBins", "bins: 200}", "bins: 100000000}",
+                {"mission.yaml: line", "100000000 range bins: expected at most 16384"}),
+      {.name = "SonarFrameOfTooManyPixels",
+       .prepare =
+           [](const Workspace& ws) {
+             replaceIn(ws.mission() / "mission.yaml", "bins: 200}", "bins: 16384}");
+             replaceIn(ws.mission() / "mission.yaml", "beams: 64}", "beams: 4096}");
+             return std::string("info mission");
+           },
+       .message = {"mission.yaml: line 6: sonar",
+                   "16384 bins x 4096 beams: expected at most 16777216 pixels"}},
+      hugeFrame("FramePng30000Square", 30000, 30000),
+      hugeFrame("FramePngTooWide", 5000, 200),
+      hugeFrame("FramePngTooTall", 64, 20000),
+      hugeFrame("FramePngTooManyPixels", 4096, 16384),
+      {.name = "FramePngHugeIsSkippedByInfo",
+       .prepare =
+           [](const Workspace& ws) {
+             writeBytes(ws.mission() / "frames/000003.png", pngHeader(30000, 30000));
+             return std::string("info mission");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"Failed       1 frames"}},
+      {.name = "ReconstructElevationStepTiny",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("reconstruct mission --elevation-step 1e-7 --out out");
+           },
+       .message = {"--elevation-step", "from 0.01 to 90"},
+       .absent = {"out"}},
+      {.name = "ReconstructElevationStepTinyInParams",
+       .prepare =
+           [](const Workspace& ws) {
+             writeBytes(ws / "params.yaml", "elevation_step_deg: 1e-7\n");
+             return std::string("reconstruct mission --params params.yaml --out out");
+           },
+       .message = {"params.yaml: line 1: elevation_step_deg", "from 0.01 to 90"},
+       .absent = {"out"}},
+      {.name = "SimulateElevationStepTiny",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("simulate --scene riser --elevation-step 1e-7 --out sim");
+           },
+       .message = {"--elevation-step: Value 1e-7 not in range 0.010000 to 90"},
+       .absent = {"sim"}},
+      // Completeness samples the reference; on a 1 km triangle every 1 cm that was 5e9 points.
+      {.name = "EvaluateOnAReferenceOfOneKilometre",
+       .prepare =
+           [](const Workspace& ws) {
+             writeBytes(ws / "reference.ply",
+                        asciiPly({{0, 0, 10}, {1000, 0, 10}, {0, 1000, 10}}, {{0, 1, 2}}));
+             writeBytes(ws / "points.ply", asciiPly({{2, 0, 10}, {2.05, 0.01, 10}}));
+             return std::string(
+                 "evaluate --json --reference reference.ply --reconstruction points.ply");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"\"reference_spacing_m\": 0.555"}},
+      {.name = "ReconstructVoxelSizeTiny",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("reconstruct mission --voxel-size 0.0001 --out out");
+           },
+       .message = {"parameters: voxel_size_m: the map's box",
+                   "voxels of 0.0001 m: expected at most",
+                   "use a larger voxel size or a smaller region"},
+       .absent = {"out/surface_points.ply", "out/report.json"}},
+  };
+}
+
+}  // namespace sonarcarve::test

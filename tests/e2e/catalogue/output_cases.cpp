@@ -1,0 +1,192 @@
+// Class "writes that cannot lie": output folders that cannot be written, outputs that collide
+// with folders, and a full disk (a file size limit) for every kind of output. The command
+// fails, says why and where, and the previous file is intact.
+#include "e2e/catalogue/catalogue.h"
+
+namespace sonarcarve::test {
+namespace {
+
+constexpr int kFullDiskKib = 8;  // every output below is larger
+
+// A reconstruction folder holding a mesh of 2 x 40 x 40 triangles and its vertices as points.
+std::string writeReconstruction(const Workspace& ws) {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<long, 3>> faces;
+  constexpr int kSide = 41;
+  for (int i = 0; i < kSide; ++i) {
+    for (int j = 0; j < kSide; ++j) {
+      points.push_back({0.05 * i, 0.05 * j, 10.0 + 0.001 * i * j});
+      if (i > 0 && j > 0) {
+        const long a = (i - 1) * kSide + j - 1, b = a + 1, c = a + kSide, d = c + 1;
+        faces.push_back({a, b, d});
+        faces.push_back({a, d, c});
+      }
+    }
+  }
+  writeBytes(ws / "rec/mesh.ply", asciiPly(points, faces));
+  writeBytes(ws / "rec/surface_points.ply", asciiPly(points));
+  return "rec";
+}
+
+CatalogueCase exportFullDisk(const std::string& name, const std::string& file,
+                             const std::string& flags = "") {
+  return {.name = name,
+          .prepare =
+              [file, flags](const Workspace& ws) {
+                writePrevious(ws / file);
+                return "export " + writeReconstruction(ws) + flags + " --out " + file;
+              },
+          .message = {file + ": byte",
+                      "write failed: File too large (disk full or file size "
+                      "limit); previous file kept"},
+          .intact = {file},
+          .file_size_limit_kib = kFullDiskKib};
+}
+
+}  // namespace
+
+std::vector<CatalogueCase> outputCases() {
+  return {
+      {.name = "ReconstructOutIsAFile",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "out");
+             return std::string("reconstruct mission --out out");
+           },
+       .message = {"out: cannot create the output folder", "expected a folder"},
+       .intact = {"out"}},
+      {.name = "ReconstructOutUnderAFile",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "file");
+             return std::string("reconstruct mission --out file/out");
+           },
+       .message = {"file/out: cannot create the output folder", "Not a directory"},
+       .intact = {"file"}},
+      {.name = "ReconstructOutNotWritable",
+       .prepare = [](const Workspace&) { return std::string("reconstruct mission --out /proc"); },
+       .message = {"/proc: cannot write in the output folder",
+                   "expected a folder where files can be created"}},
+      {.name = "SimulateOutIsAFile",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "sim");
+             return std::string("simulate --scene riser --max-frames 1 --out sim");
+           },
+       .message = {"sim", "cannot create the output folder"},
+       .intact = {"sim"}},
+      {.name = "ExportOutIsAFolder",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "mesh.obj");
+             writePrevious(ws / "mesh.obj/inside");
+             return "export " + writeReconstruction(ws) + " --out mesh.obj";
+           },
+       .message = {"mesh.obj: cannot replace the file: Is a directory"},
+       .intact = {"mesh.obj/inside"}},
+      {.name = "NoiseModelOutFolderMissing",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("noise-model mission --out missing/noise.yaml");
+           },
+       .message = {"missing/noise.yaml: cannot create a file in missing: No such file"},
+       .absent = {"missing"}},
+      {.name = "FramePictureIsAFolder",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "polar.png");
+             return std::string("frame mission --index 0 --polar polar.png");
+           },
+       .message = {"polar.png: cannot replace the file"}},
+      {.name = "ReconstructIntoAFolderInUse",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "out/report.json");
+             return std::string("reconstruct mission --out out");
+           },
+       .message = {"out: another run is writing in this output folder"},
+       .intact = {"out/report.json"},
+       .wrapper = "flock -o out/.sonarcarve-lock"},
+      {.name = "ReconstructRemovesTheMeshOfAnEarlierRun",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "out/mesh.ply");
+             writePrevious(ws / "out/mesh.stl");
+             return std::string("reconstruct mission --mesh false --out out");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"removed out/mesh.ply of an earlier run"},
+       .absent = {"out/mesh.ply", "out/mesh.stl"}},
+      {.name = "ExportPointsOntoAFolder",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "points.ply");
+             return "export " + writeReconstruction(ws) + " --points --out points.ply";
+           },
+       .message = {"points.ply: cannot replace the file: Is a directory"}},
+      {.name = "NoiseModelOntoAFolder",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "noise.yaml");
+             return std::string("noise-model mission --out noise.yaml");
+           },
+       .message = {"noise.yaml: cannot replace the file: Is a directory"}},
+      {.name = "ImportIntoAFile",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+             std::filesystem::copy_file(ws.mission() / "nav.csv", ws / "nav.csv");
+             writePrevious(ws / "imported");
+             return std::string("import --format oculus ping.raw --nav nav.csv --out imported");
+           },
+       .message = {"imported: is a file: expected a new or empty folder"},
+       .intact = {"imported"}},
+      {.name = "SimulateIntoAFolderThatCannotBeWritten",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("simulate --scene riser --max-frames 1 --out /proc");
+           },
+       .message = {"/proc: cannot write in the output folder"}},
+      exportFullDisk("ExportObjOnAFullDisk", "mesh.obj"),
+      exportFullDisk("ExportStlOnAFullDisk", "mesh.stl"),
+      exportFullDisk("ExportPlyOnAFullDisk", "mesh.ply"),
+      exportFullDisk("ExportAsciiPlyOnAFullDisk", "mesh_ascii.ply", " --format ply-ascii"),
+      exportFullDisk("ExportPointsOnAFullDisk", "points.ply", " --points"),
+      {.name = "NoiseModelOnAFullDisk",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "noise.yaml");
+             return std::string("noise-model mission --out noise.yaml");
+           },
+       .message = {"noise.yaml: byte", "write failed: File too large"},
+       .intact = {"noise.yaml"},
+       .file_size_limit_kib = kFullDiskKib},
+      {.name = "FramePictureOnAFullDisk",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "fan.png");
+             return std::string("frame mission --index 0 --fan fan.png");
+           },
+       .message = {"fan.png: byte", "write failed: File too large"},
+       .intact = {"fan.png"},
+       .file_size_limit_kib = 2},
+      {.name = "ReconstructOnAFullDisk",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "out/report.json");
+             return std::string("reconstruct mission --out out");
+           },
+       .message = {"out/", "write failed: File too large"},
+       .intact = {"out/report.json"},
+       .file_size_limit_kib = 1},
+      {.name = "SimulateOnAFullDisk",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("simulate --scene riser --max-frames 1 --out sim");
+           },
+       .message = {"sim/", "write failed: File too large"},
+       .file_size_limit_kib = kFullDiskKib},
+  };
+}
+
+}  // namespace sonarcarve::test
