@@ -74,9 +74,10 @@ CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& par
   lut_inv_step_ = static_cast<float>(1.0 / step);
 }
 
-Eigen::AlignedBox3d CarvingGeometry::frustumBounds(const Eigen::Isometry3d& T_world_sonar) const {
+Eigen::AlignedBox3d CarvingGeometry::frustumBounds(const Eigen::Isometry3d& T_world_sonar,
+                                                   double half_elevation) const {
   Eigen::AlignedBox3d box;
-  const double half = carved_half_elevation_;
+  const double half = half_elevation >= 0.0 ? half_elevation : carved_half_elevation_;
   const double left = sonar_.bearings().leftEdge();
   const double right = sonar_.bearings().rightEdge();
   const int steps =
@@ -99,7 +100,8 @@ Eigen::AlignedBox3d CarvingGeometry::frustumBounds(const Eigen::Isometry3d& T_wo
   return box;
 }
 
-bool CarvingGeometry::sphereMayTouchFrustum(const Eigen::Vector3d& c, double radius) const {
+bool CarvingGeometry::sphereMayTouchFrustum(const Eigen::Vector3d& c, double radius,
+                                            double sin_half, double cos_half) const {
   // Signed distances to the frustum's bounding surfaces, without trigonometry: this runs for
   // every block of a frame's bounding box.
   const double d2 = c.squaredNorm();
@@ -119,7 +121,7 @@ bool CarvingGeometry::sphereMayTouchFrustum(const Eigen::Vector3d& c, double rad
   }
   // Elevation: distance to the cone |theta| = carved half elevation.
   const double horizontal = std::hypot(c.x(), c.y());
-  return std::abs(c.z()) * cos_carved_half_ - horizontal * sin_carved_half_ <= radius;
+  return std::abs(c.z()) * cos_half - horizontal * sin_half <= radius;
 }
 
 }  // namespace sonarcarve

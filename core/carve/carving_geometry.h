@@ -41,11 +41,17 @@ class CarvingGeometry {
     const auto i = static_cast<std::size_t>(s * inverse_gain_scale_);
     return inverse_gain_[std::min(i, inverse_gain_.size() - 1)];
   }
-  /// Bounding box of the frustum (range window x field of view x carved elevation) in the
-  /// world.
-  Eigen::AlignedBox3d frustumBounds(const Eigen::Isometry3d& T_world_sonar) const;
+  /// Bounding box of the frustum (range window x field of view x carved elevation, or
+  /// +-`half_elevation` when given) in the world.
+  Eigen::AlignedBox3d frustumBounds(const Eigen::Isometry3d& T_world_sonar,
+                                    double half_elevation = -1.0) const;
   /// Whether a sphere (sonar frame) may touch the frustum; conservative.
-  bool sphereMayTouchFrustum(const Eigen::Vector3d& centre_sonar, double radius) const;
+  bool sphereMayTouchFrustum(const Eigen::Vector3d& centre_sonar, double radius) const {
+    return sphereMayTouchFrustum(centre_sonar, radius, sin_carved_half_, cos_carved_half_);
+  }
+  /// The same within +-half elevation given by its sine and cosine.
+  bool sphereMayTouchFrustum(const Eigen::Vector3d& centre_sonar, double radius, double sin_half,
+                             double cos_half) const;
 
   float rangeMinSq() const { return range_min_sq_; }
   float rangeMaxSq() const { return range_max_sq_; }

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.h"
+#include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
 namespace {
@@ -33,10 +35,39 @@ struct FrameView {
   bool beam_aware = false;
   bool dark_is_exact = false;
   float keep_level = 0.0f;
+  float sin2_carved = 0.0f;  // sin^2 of the elevation this frame can carve to
 };
 
 // An image of whole counts holds under half a count where it reads 0.
 constexpr float kDarkPixelLevel = 0.5f;
+
+// Beam-aware: how far off the axis this frame can carve. A pixel carves a voxel where its bound
+// I / p(theta) is at or below the keep level, so nowhere p(theta) is under the faintest
+// bound a pixel gives on the axis over the keep level; past that the frame does nothing and
+// its voxels are not visited (a detector's frames, whose lit pixels are all far above the keep
+// level, carve inside +-aperture/2 only, at the paper's cost).
+double carvedHalfElevation(const cv::Mat& pixels, const SonarModel& sonar, float keep_level,
+                           bool dark_is_exact, double main_lobe_half) {
+  double faintest = std::numeric_limits<double>::infinity();
+  if (dark_is_exact) {
+    faintest = kDarkPixelLevel;
+  }
+  double min_lit = 0.0;
+  cv::minMaxLoc(pixels, &min_lit, nullptr, nullptr, nullptr, pixels > 0.0f);
+  if (min_lit > 0.0) {
+    faintest = std::min(faintest, min_lit);
+  }
+  const double aperture_half = 0.5 * sonar.verticalAperture();
+  const double gain = faintest / static_cast<double>(keep_level);
+  if (!(gain < 0.5)) {
+    return aperture_half;
+  }
+  if (!(gain > 0.0)) {
+    return main_lobe_half;
+  }
+  return std::clamp(SincSquaredBeam(sonar.verticalAperture()).halfAngleAt(10.0 * std::log10(gain)),
+                    aperture_half, main_lobe_half);
+}
 
 // Evidence is capped so that a voxel seen lit many times can still be carved by many dark
 // views (the log-odds of p = 0.9999 is 9.2 per view).
@@ -59,7 +90,7 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
   const float rmin2 = g.rangeMinSq();
   const float rmax2 = g.rangeMaxSq();
   const float sin2 = g.sinHalfApertureSq();
-  const float sin2_carved = g.sinCarvedHalfElevationSq();
+  const float sin2_carved = f.sin2_carved;
   const float bin_min = g.binMin();
   const float inv_res = g.binInvResolution();
   int observed = 0;
@@ -180,6 +211,13 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   frame.beam_aware = carvesMainLobe(sonar, params_);
   frame.dark_is_exact = params_.dark_pixels == CarveParams::DarkPixels::Exact;
   frame.keep_level = static_cast<float>(params_.keep_level);
+  const double half_elevation =
+      frame.beam_aware ? carvedHalfElevation(pixels, sonar, frame.keep_level, frame.dark_is_exact,
+                                             geometry_.carvedHalfElevation())
+                       : geometry_.carvedHalfElevation();
+  const double sin_half = std::sin(half_elevation);
+  const double cos_half = std::cos(half_elevation);
+  frame.sin2_carved = static_cast<float>(sin_half * sin_half);
   if (visibility.first_return_m != nullptr) {
     frame.first_return = visibility.first_return_m->data();
     frame.elevation_bins = visibility.elevation_bins;
@@ -189,7 +227,8 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   }
 
   // Blocks of the map inside the frustum's bounding box.
-  Eigen::AlignedBox3d box = geometry_.frustumBounds(T_world_sonar).intersection(map_.bounds());
+  Eigen::AlignedBox3d box =
+      geometry_.frustumBounds(T_world_sonar, half_elevation).intersection(map_.bounds());
   if (box.isEmpty()) {
     return {};
   }
@@ -221,7 +260,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
         }
         const Eigen::Vector3d origin = (rel + map_.firstBlock()).cast<double>() * block;
         const Eigen::Vector3d centre = origin + Eigen::Vector3d::Constant(0.5 * block);
-        if (!geometry_.sphereMayTouchFrustum(T_sonar_world * centre, radius)) {
+        if (!geometry_.sphereMayTouchFrustum(T_sonar_world * centre, radius, sin_half, cos_half)) {
           continue;
         }
         ++my_visited;
