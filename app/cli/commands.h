@@ -19,5 +19,6 @@ void addNoiseModelCommand(CLI::App& app, int& exit_code);
 void addExportCommand(CLI::App& app, int& exit_code);
 void addImportCommand(CLI::App& app, int& exit_code);
 void addParamsCommand(CLI::App& app, int& exit_code);
+void addNavErrorCommand(CLI::App& app, int& exit_code);
 
 }  // namespace sonarcarve::cli

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   sonarcarve::cli::addEvaluateCommand(app, pool, exit_code);
   sonarcarve::cli::addExportCommand(app, exit_code);
   sonarcarve::cli::addNoiseModelCommand(app, exit_code);
+  sonarcarve::cli::addNavErrorCommand(app, exit_code);
   sonarcarve::cli::addImportCommand(app, exit_code);
   sonarcarve::cli::addBenchCommand(app, pool, exit_code);
   try {

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/nav_error_flags.h"
 #include "cli/terminal_progress.h"
 #include "common/angles.h"
 #include "common/error.h"
@@ -22,8 +23,7 @@ struct SimulateOptions {
   double step_m = 0.1;
   int max_frames = -1;
   std::uint64_t seed = 1;
-  double nav_position_sigma_m = 0.0;
-  double nav_attitude_sigma_deg = 0.0;
+  NavErrorSpec nav_error;
   double elevation_step_deg = 0.1;
   int rays_per_beam = 2;
   std::string beam = "clipped";
@@ -32,6 +32,11 @@ struct SimulateOptions {
   bool empty_water = false;
   bool force = false;
 };
+
+NavErrorSpec navErrorWithSeed(NavErrorSpec spec, std::uint64_t seed) {
+  spec.seed = seed;
+  return spec;
+}
 
 NoiseSpec noiseFrom(const std::string& choice, std::uint64_t seed) {
   NoiseSpec spec;
@@ -65,7 +70,7 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
       trajectory,
       imaging,
       noiseFrom(o.noise, o.seed),
-      NavErrorSpec{o.nav_position_sigma_m, o.nav_attitude_sigma_deg, o.seed},
+      navErrorWithSeed(o.nav_error, o.seed),
       o.empty_water,
       o.max_frames >= 0 ? std::optional<int>(o.max_frames) : std::nullopt,
       out};
@@ -102,12 +107,7 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   cmd->add_option("--max-frames", o->max_frames, "Stop after this many frames");
   cmd->add_option("--seed", o->seed, "Seed of the noise and navigation error")
       ->capture_default_str();
-  cmd->add_option("--nav-error-position", o->nav_position_sigma_m,
-                  "Random-walk step of the recorded position per frame, m")
-      ->capture_default_str();
-  cmd->add_option("--nav-error-attitude", o->nav_attitude_sigma_deg,
-                  "Random-walk step of the recorded attitude per frame, deg")
-      ->capture_default_str();
+  addNavErrorFlags(*cmd, o->nav_error);
   cmd->add_option("--elevation-step", o->elevation_step_deg, "Ray spacing in elevation, deg")
       ->check(CLI::Range(0.01, 90.0))
       ->capture_default_str();

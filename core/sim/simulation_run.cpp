@@ -46,6 +46,10 @@ std::string settingsYaml(const SimulationRequest& r, std::size_t frames,
       << "navigation_error:\n"
       << "  position_sigma_m: " << shortestNumber(r.nav_error.position_sigma_m) << "\n"
       << "  attitude_sigma_deg: " << shortestNumber(r.nav_error.attitude_sigma_deg) << "\n"
+      << "  position_bias_m: " << shortestNumber(r.nav_error.position_bias_m) << "\n"
+      << "  attitude_bias_deg: " << shortestNumber(r.nav_error.attitude_bias_deg) << "\n"
+      << "  position_noise_m: " << shortestNumber(r.nav_error.position_noise_m) << "\n"
+      << "  attitude_noise_deg: " << shortestNumber(r.nav_error.attitude_noise_deg) << "\n"
       << "  seed: " << r.nav_error.seed << "\n"
       << "noise:\n";
   std::istringstream noise(r.noise.toYaml());

@@ -120,19 +120,34 @@ Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& ta
               "unknown trajectory: expected vertical, orbit, lawnmower or a .csv of poses");
 }
 
+bool NavErrorSpec::any() const {
+  return position_sigma_m != 0.0 || attitude_sigma_deg != 0.0 || position_bias_m != 0.0 ||
+         attitude_bias_deg != 0.0 || position_noise_m != 0.0 || attitude_noise_deg != 0.0;
+}
+
 std::vector<NavSample> withNavigationError(const std::vector<NavSample>& truth,
                                            const NavErrorSpec& spec) {
-  std::mt19937_64 rng(spec.seed);
+  // One stream per kind of error (the random walk's is the seed's own, as it always was).
+  std::mt19937_64 walk_rng(spec.seed);
+  std::mt19937_64 bias_rng(spec.seed ^ 0x6a09e667f3bcc909ULL);
+  std::mt19937_64 noise_rng(spec.seed ^ 0xbb67ae8584caa73bULL);
   std::normal_distribution<double> normal(0.0, 1.0);
-  Eigen::Vector3d position_error = Eigen::Vector3d::Zero();
-  Eigen::Vector3d attitude_error = Eigen::Vector3d::Zero();  // roll, pitch, yaw (rad)
+  const auto draw = [&](std::mt19937_64& rng, double sigma) -> Eigen::Vector3d {
+    return sigma * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+  };
+  const Eigen::Vector3d position_bias = draw(bias_rng, spec.position_bias_m);
+  const Eigen::Vector3d attitude_bias = draw(bias_rng, degToRad(spec.attitude_bias_deg));
+  Eigen::Vector3d position_walk = Eigen::Vector3d::Zero();
+  Eigen::Vector3d attitude_walk = Eigen::Vector3d::Zero();  // roll, pitch, yaw (rad)
   std::vector<NavSample> recorded;
   recorded.reserve(truth.size());
   for (const NavSample& t : truth) {
-    position_error +=
-        spec.position_sigma_m * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
-    attitude_error +=
-        degToRad(spec.attitude_sigma_deg) * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+    position_walk += draw(walk_rng, spec.position_sigma_m);
+    attitude_walk += draw(walk_rng, degToRad(spec.attitude_sigma_deg));
+    const Eigen::Vector3d position_error =
+        position_walk + position_bias + draw(noise_rng, spec.position_noise_m);
+    const Eigen::Vector3d attitude_error =
+        attitude_walk + attitude_bias + draw(noise_rng, degToRad(spec.attitude_noise_deg));
     NavSample r = t;
     r.position_m += position_error;
     r.q_world_vehicle =

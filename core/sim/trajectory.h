@@ -53,13 +53,23 @@ struct Trajectory {
 /// Throws Error for an unknown kind, an unreadable CSV or a target the kind cannot cover.
 Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& target);
 
+/// Navigation error, in the manner of a DVL-aided INS or USBL fix: three seeded kinds, each on
+/// the position (every axis, metres) and on the attitude (roll, pitch and yaw, degrees).
 struct NavErrorSpec {
-  double position_sigma_m = 0.0;    ///< random-walk step, per frame, in each axis
-  double attitude_sigma_deg = 0.0;  ///< random-walk step, per frame, in roll, pitch and yaw
+  double position_sigma_m = 0.0;    ///< random walk: step per navigation sample
+  double attitude_sigma_deg = 0.0;  ///< random walk: step per navigation sample
   std::uint64_t seed = 1;
+  double position_bias_m = 0.0;     ///< constant bias: one offset per axis, drawn once
+  double attitude_bias_deg = 0.0;   ///< constant bias: one offset per angle, drawn once
+  double position_noise_m = 0.0;    ///< white noise: independent per sample
+  double attitude_noise_deg = 0.0;  ///< white noise: independent per sample
+
+  bool any() const;
 };
 
-/// The poses a navigation system would record: the true ones plus a random walk.
+/// The poses a navigation system would record: the true ones plus the errors of `spec`, each
+/// the standard deviation of a normal draw. Each kind has its own stream of the seed, so that
+/// adding one kind leaves the others' draws as they were.
 std::vector<NavSample> withNavigationError(const std::vector<NavSample>& truth,
                                            const NavErrorSpec& spec);
 

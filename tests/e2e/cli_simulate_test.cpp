@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/mission.h"
+#include "io/nav_csv.h"
 #include "support/cli_runner.h"
 #include "support/test_support.h"
 
@@ -58,6 +59,38 @@ TEST(CliSimulate, RealisticBeamIsRecordedInTheSettings) {
   const auto bad = runCli("simulate --scene riser --beam fuzzy --out " + quoted(dir.path() / "b"));
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_NE(bad.output.find("--beam"), std::string::npos) << bad.output;
+}
+
+TEST(CliNavError, WritesTheMissionsNavigationWithSeededErrors) {
+  // The example mission's navigation, with a constant bias of 0.5 m (standard deviation per
+  // axis) and no other error: every sample moves by the same offset, the same for one seed.
+  test::ScratchDir dir;
+  const auto nav = dir.path() / "nav.csv";
+  const std::string command = "nav-error " + quoted(test::exampleMission()) + " --out " +
+                              quoted(nav) + " --nav-bias-position 0.5 --seed 9";
+  ASSERT_EQ(runCli(command).exit_code, 0);
+  const Mission mission = readMission(test::exampleMission());
+  const NavTrack recorded = readNavCsv(nav);
+  ASSERT_EQ(recorded.samples().size(), mission.nav.samples().size());
+  const Eigen::Vector3d offset =
+      recorded.samples().front().position_m - mission.nav.samples().front().position_m;
+  EXPECT_GT(offset.norm(), 1e-3);
+  for (std::size_t i = 0; i < recorded.samples().size(); ++i) {
+    const Eigen::Vector3d d =
+        recorded.samples()[i].position_m - mission.nav.samples()[i].position_m;
+    EXPECT_LT((d - offset).norm(), 1e-9) << i;
+    EXPECT_EQ(recorded.samples()[i].time_s, mission.nav.samples()[i].time_s);
+  }
+  const auto again = dir.path() / "again.csv";
+  ASSERT_EQ(runCli("nav-error " + quoted(test::exampleMission()) + " --out " + quoted(again) +
+                   " --nav-bias-position 0.5 --seed 9")
+                .exit_code,
+            0);
+  EXPECT_EQ(test::readText(again), test::readText(nav));  // reproducible
+  EXPECT_NE(runCli("nav-error " + quoted(test::exampleMission()) + " --out " + quoted(again) +
+                   " --nav-noise-position -1")
+                .exit_code,
+            0);
 }
 
 TEST(CliSimulate, BadSceneOrTrajectoryFailsWithAMessage) {

@@ -89,5 +89,44 @@ TEST(Trajectory, NavigationErrorIsARandomWalkFromTheTruth) {
             noisy.back().position_m);  // reproducible
 }
 
+TEST(Trajectory, NavigationBiasIsConstantAndWhiteNoiseIsIndependent) {
+  const Trajectory t = makeTrajectory(TrajectorySpec{}, riserLike());
+  const auto errorAt = [&](const std::vector<NavSample>& recorded, std::size_t i) {
+    return Eigen::Vector3d(recorded[i].position_m - t.poses[i].position_m);
+  };
+  NavErrorSpec walk{0.01, 0.1, 7};
+  NavErrorSpec walk_and_bias = walk;
+  walk_and_bias.position_bias_m = 0.2;
+  const auto a = withNavigationError(t.poses, walk);
+  const auto b = withNavigationError(t.poses, walk_and_bias);
+  // The bias is one offset for the whole track, added to the same random walk.
+  const Eigen::Vector3d bias = errorAt(b, 0) - errorAt(a, 0);
+  EXPECT_GT(bias.norm(), 0.0);
+  for (std::size_t i = 0; i < t.poses.size(); ++i) {
+    EXPECT_LT((errorAt(b, i) - errorAt(a, i) - bias).norm(), 1e-9) << i;
+  }
+  // White noise: zero mean, its standard deviation per axis, no memory from one sample to the
+  // next (a walk's consecutive errors differ by one step; white noise's by sqrt(2) sigma).
+  NavErrorSpec white;
+  white.position_noise_m = 0.01;
+  const auto w = withNavigationError(t.poses, white);
+  double sum = 0.0, sum2 = 0.0, diff2 = 0.0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const Eigen::Vector3d e = errorAt(w, i);
+    sum += e.sum();
+    sum2 += e.squaredNorm();
+    if (i > 0) {
+      diff2 += (e - errorAt(w, i - 1)).squaredNorm();
+    }
+  }
+  const double n = 3.0 * static_cast<double>(w.size());
+  // Tolerances: the sample statistics of about 280 normal draws (standard error of the
+  // variance about 8 %, of the mean 0.06 sigma); 4 standard errors.
+  EXPECT_NEAR(sum / n, 0.0, 4.0 * 0.01 / std::sqrt(n));
+  EXPECT_NEAR(std::sqrt(sum2 / n), 0.01, 0.01 * 4.0 * std::sqrt(0.5 / n));
+  EXPECT_NEAR(std::sqrt(diff2 / (n - 3.0)), std::sqrt(2.0) * 0.01,
+              std::sqrt(2.0) * 0.01 * 4.0 * std::sqrt(1.0 / n));
+}
+
 }  // namespace
 }  // namespace sonarcarve

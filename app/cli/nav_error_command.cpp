@@ -1,0 +1,66 @@
+// `sonarcarve-cli nav-error MISSION --out NAV.csv`: the mission's navigation with seeded
+// errors (random walk, constant bias, white noise; docs/simulator.md), to reconstruct with
+// `reconstruct MISSION --nav NAV.csv` against the mission's own ground truth. The same flags
+// serve `simulate`.
+#include <iostream>
+
+#include "cli/commands.h"
+#include "cli/nav_error_flags.h"
+#include "io/atomic_file.h"
+#include "io/mission.h"
+#include "io/nav_csv.h"
+#include "sim/trajectory.h"
+
+namespace sonarcarve::cli {
+
+void addNavErrorFlags(CLI::App& cmd, NavErrorSpec& spec) {
+  cmd.add_option("--nav-error-position", spec.position_sigma_m,
+                 "Random-walk step of the recorded position per navigation sample, m")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd.add_option("--nav-error-attitude", spec.attitude_sigma_deg,
+                 "Random-walk step of the recorded attitude per navigation sample, deg")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd.add_option("--nav-bias-position", spec.position_bias_m,
+                 "Constant position bias: standard deviation of one offset per axis, m")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd.add_option("--nav-bias-attitude", spec.attitude_bias_deg,
+                 "Constant attitude bias: standard deviation of one offset per angle, deg")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd.add_option("--nav-noise-position", spec.position_noise_m,
+                 "White noise on each recorded position, standard deviation per axis, m")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd.add_option("--nav-noise-attitude", spec.attitude_noise_deg,
+                 "White noise on each recorded attitude, standard deviation per angle, deg")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+}
+
+void addNavErrorCommand(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand(
+      "nav-error", "Write a mission's navigation with seeded errors, to reconstruct with --nav");
+  struct Options {
+    std::string mission, out;
+    NavErrorSpec spec;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("mission", o->mission, "Mission folder")->required();
+  cmd->add_option("--out", o->out, "Navigation CSV to write (the mission format's columns)")
+      ->required();
+  cmd->add_option("--seed", o->spec.seed, "Seed of the errors")->capture_default_str();
+  addNavErrorFlags(*cmd, o->spec);
+  cmd->callback([o, &exit_code] {
+    const Mission mission = readMission(o->mission);
+    const NavTrack recorded(withNavigationError(mission.nav.samples(), o->spec));
+    writeFileAtomically(o->out, navCsvText(recorded));
+    std::cout << recorded.samples().size() << " navigation samples with errors written to "
+              << o->out << "\n";
+    exit_code = 0;
+  });
+}
+
+}  // namespace sonarcarve::cli
