@@ -14,30 +14,30 @@
 namespace sonarcarve::cli {
 
 void addNavErrorFlags(CLI::App& cmd, NavErrorSpec& spec) {
-  cmd.add_option("--nav-error-position", spec.position_sigma_m,
-                 "Random-walk step of the recorded position per navigation sample, m")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd.add_option("--nav-error-attitude", spec.attitude_sigma_deg,
-                 "Random-walk step of the recorded attitude per navigation sample, deg")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd.add_option("--nav-bias-position", spec.position_bias_m,
-                 "Constant position bias: standard deviation of one offset per axis, m")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd.add_option("--nav-bias-attitude", spec.attitude_bias_deg,
-                 "Constant attitude bias: standard deviation of one offset per angle, deg")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd.add_option("--nav-noise-position", spec.position_noise_m,
-                 "White noise on each recorded position, standard deviation per axis, m")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd.add_option("--nav-noise-attitude", spec.attitude_noise_deg,
-                 "White noise on each recorded attitude, standard deviation per angle, deg")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+  struct Flag {
+    const char* name;
+    double NavErrorSpec::*field;
+    const char* help;
+  };
+  static constexpr Flag kFlags[] = {
+      {"--nav-error-position", &NavErrorSpec::position_sigma_m,
+       "Random-walk step of the recorded position per navigation sample, m"},
+      {"--nav-error-attitude", &NavErrorSpec::attitude_sigma_deg,
+       "Random-walk step of the recorded attitude per navigation sample, deg"},
+      {"--nav-bias-position", &NavErrorSpec::position_bias_m,
+       "Constant position bias: standard deviation of one offset per axis, m"},
+      {"--nav-bias-attitude", &NavErrorSpec::attitude_bias_deg,
+       "Constant attitude bias: standard deviation of one offset per angle, deg"},
+      {"--nav-noise-position", &NavErrorSpec::position_noise_m,
+       "White noise on each recorded position, standard deviation per axis, m"},
+      {"--nav-noise-attitude", &NavErrorSpec::attitude_noise_deg,
+       "White noise on each recorded attitude, standard deviation per angle, deg"},
+  };
+  for (const Flag& flag : kFlags) {
+    cmd.add_option(flag.name, spec.*flag.field, flag.help)
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+  }
 }
 
 void addNavErrorCommand(CLI::App& app, int& exit_code) {
