@@ -25,25 +25,25 @@ CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& par
   range_max_sq_ = static_cast<float>(range_max_ * range_max_);
   const double s = std::sin(0.5 * sonar.verticalAperture());
   sin_half_aperture_sq_ = static_cast<float>(s * s);
+  sin_half_aperture_ = s;
+  cos_half_aperture_ = std::cos(0.5 * sonar.verticalAperture());
   const SincSquaredBeam elevation_beam(sonar.verticalAperture());
-  carved_half_elevation_ =
-      carvesMainLobe(sonar, params) ? elevation_beam.null(1) : 0.5 * sonar.verticalAperture();
+  const bool main_lobe = carvesMainLobe(sonar, params);
+  carved_half_elevation_ = main_lobe ? elevation_beam.null(1) : 0.5 * sonar.verticalAperture();
   if (carved_half_elevation_ >= 0.5 * std::numbers::pi) {
     throw Error("carving", "vertical aperture",
                 "the beam's main lobe must stay within 90 degrees of its axis");
   }
-  sin_carved_half_ = std::sin(carved_half_elevation_);
-  cos_carved_half_ = std::cos(carved_half_elevation_);
-  sin_carved_half_sq_ = static_cast<float>(sin_carved_half_ * sin_carved_half_);
-  if (carvesMainLobe(sonar, params)) {
+  if (main_lobe) {
+    const double sin_carved = std::sin(carved_half_elevation_);
     constexpr int kGainSamples = 2048;
     inverse_gain_.resize(kGainSamples);
     for (int i = 0; i < kGainSamples; ++i) {
-      const double elevation = std::asin((i + 0.5) / kGainSamples * sin_carved_half_);
+      const double elevation = std::asin((i + 0.5) / kGainSamples * sin_carved);
       inverse_gain_[static_cast<std::size_t>(i)] =
           static_cast<float>(1.0 / std::max(elevation_beam.power(elevation), 1e-6));
     }
-    inverse_gain_scale_ = static_cast<float>(kGainSamples / sin_carved_half_);
+    inverse_gain_scale_ = static_cast<float>(kGainSamples / sin_carved);
   } else {
     inverse_gain_.assign(1, 1.0f);
   }

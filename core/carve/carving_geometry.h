@@ -45,9 +45,10 @@ class CarvingGeometry {
   /// +-`half_elevation` when given) in the world.
   Eigen::AlignedBox3d frustumBounds(const Eigen::Isometry3d& T_world_sonar,
                                     double half_elevation = -1.0) const;
-  /// Whether a sphere (sonar frame) may touch the frustum; conservative.
+  /// Whether a sphere (sonar frame) may touch the frustum within +-aperture/2 (what
+  /// occlusion resolution looks at); conservative.
   bool sphereMayTouchFrustum(const Eigen::Vector3d& centre_sonar, double radius) const {
-    return sphereMayTouchFrustum(centre_sonar, radius, sin_carved_half_, cos_carved_half_);
+    return sphereMayTouchFrustum(centre_sonar, radius, sin_half_aperture_, cos_half_aperture_);
   }
   /// The same within +-half elevation given by its sine and cosine.
   bool sphereMayTouchFrustum(const Eigen::Vector3d& centre_sonar, double radius, double sin_half,
@@ -56,7 +57,6 @@ class CarvingGeometry {
   float rangeMinSq() const { return range_min_sq_; }
   float rangeMaxSq() const { return range_max_sq_; }
   float sinHalfApertureSq() const { return sin_half_aperture_sq_; }
-  float sinCarvedHalfElevationSq() const { return sin_carved_half_sq_; }
   float binMin() const { return static_cast<float>(sonar_.range().min_m); }
   float binInvResolution() const { return static_cast<float>(1.0 / sonar_.range().resolution_m); }
 
@@ -67,10 +67,9 @@ class CarvingGeometry {
   float range_min_sq_;
   float range_max_sq_;
   float sin_half_aperture_sq_;
+  double sin_half_aperture_;
+  double cos_half_aperture_;
   double carved_half_elevation_;
-  double sin_carved_half_;
-  double cos_carved_half_;
-  float sin_carved_half_sq_;
   std::vector<float> inverse_gain_;
   float inverse_gain_scale_ = 0.0f;
   Eigen::Vector3d left_normal_;  // inward normals of the bearing wedge's boundary planes
