@@ -13,6 +13,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/quantile.h"
 #include "common/thread_pool.h"
 #include "geometry/internal/vtk_mesh.h"
 #include "io/finite_points.h"
@@ -20,14 +21,9 @@
 namespace sonarcarve {
 namespace {
 
-double quantile(std::vector<float> values, double q) {
-  if (values.empty()) {
-    return 0.0;
-  }
-  auto it =
-      values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), it, values.end());
-  return *it;
+// The q-quantile of a copy of `values`; 0 for none.
+double quantileOf(std::vector<float> values, double q) {
+  return values.empty() ? 0.0 : quantile(values, q);
 }
 
 // Reference points farther than this from every reconstructed point count at this distance
@@ -217,8 +213,8 @@ EvaluationResult evaluate(const std::vector<Eigen::Vector3f>& reconstruction, co
   const MeshDistance to_mesh(mesh, pool);
   r.point_errors_m = to_mesh.distances(reconstruction);
   r.accuracy_mean_m = mean(r.point_errors_m);
-  r.accuracy_median_m = quantile(r.point_errors_m, 0.5);
-  r.accuracy_p90_m = quantile(r.point_errors_m, 0.9);
+  r.accuracy_median_m = quantileOf(r.point_errors_m, 0.5);
+  r.accuracy_p90_m = quantileOf(r.point_errors_m, 0.9);
   r.precision = fractionWithin(r.point_errors_m, tau_m);
   r.floating_points = static_cast<std::size_t>(std::count_if(
       r.point_errors_m.begin(), r.point_errors_m.end(), [](float d) { return d > 0.10f; }));
