@@ -1,6 +1,7 @@
 // `sonarcarve-cli reconstruct MISSION|RECORDING --out DIR`: carve, resolve occlusions, export.
 // Writes DIR/surface_points.ply, DIR/mesh.ply and DIR/mesh.stl (world NED, metres), DIR/map.bt
-// (fast engine), DIR/params.yaml (what was used) and DIR/report.json; a simulated mission's
+// (fast engine), DIR/refined_nav.csv (the track as pose refinement corrected it, when on),
+// DIR/params.yaml (what was used) and DIR/report.json; a simulated mission's
 // ground truth, when present, is evaluated too.
 #include <iostream>
 #include <string>
@@ -15,9 +16,11 @@
 #include "io/atomic_file.h"
 #include "io/frame_source.h"
 #include "io/mission.h"
+#include "io/nav_csv.h"
 #include "io/output_folder.h"
 #include "mesh/mesh_export.h"
 #include "pipeline/reconstruction.h"
+#include "pipeline/refined_track.h"
 #include "pipeline/report.h"
 
 namespace sonarcarve::cli {
@@ -50,6 +53,9 @@ void removeEarlierOutputs(const std::filesystem::path& out, const Reconstruction
   }
   if (result.mesh.triangles.empty()) {
     stale.insert(stale.end(), {"mesh.ply", "mesh.stl"});
+  }
+  if (result.refinement.empty()) {
+    stale.push_back("refined_nav.csv");
   }
   for (const std::string& name : stale) {
     std::error_code ec;
@@ -94,6 +100,10 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
     ExportOptions stl;
     stl.format = "stl";
     exportMesh(result.mesh, out / "mesh.stl", stl);
+  }
+  if (!result.refinement.empty()) {
+    writeFileAtomically(out / "refined_nav.csv",
+                        navCsvText(refinedTrack(mission, result.refinement)));
   }
   writeFileAtomically(out / "params.yaml", params.toYaml());
   writeFileAtomically(out / "report.json", report);

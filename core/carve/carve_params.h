@@ -50,6 +50,19 @@ struct CarveParams {
   /// level, so it carves only inside +-aperture/2, where the beam keeps half its power.
   enum class DarkPixels { Exact, BelowDetection };
   DarkPixels dark_pixels = DarkPixels::BelowDetection;
+  /// Robust carving (fast engine, Minimum fusion): a voxel is carved once this many views
+  /// have found it empty; 1 is the seed paper's rule (one view of empty water carves). More
+  /// votes tolerate views placed a little off by their navigation; they carve ghosts and
+  /// noise later.
+  int carve_votes = 1;
+  /// Keep each voxel's view counts even with one carve vote (pose refinement reads them).
+  bool keep_view_counts = false;
 };
+
+/// Whether a map carved with `params` keeps each voxel's view and vote counts (2 bytes a
+/// voxel more in every block that holds values).
+inline bool keepsViewCounts(const CarveParams& params) {
+  return params.carve_votes > 1 || params.keep_view_counts;
+}
 
 }  // namespace sonarcarve

@@ -36,6 +36,8 @@ struct FrameView {
   bool dark_is_exact = false;
   float keep_level = 0.0f;
   float sin2_carved = 0.0f;  // sin^2 of the elevation this frame can carve to
+  // Robust carving: views that must vote to carve a voxel (CarveParams::carve_votes).
+  int carve_votes = 1;
 };
 
 // An image of whole counts holds under half a count where it reads 0.
@@ -79,10 +81,52 @@ inline float smallAsin(float s) {
   return s * (1.0f + s2 * (1.0f / 6.0f + s2 * (3.0f / 40.0f + s2 * (5.0f / 112.0f))));
 }
 
-// Carves the 512 voxels of one block in `values`; returns (voxels observed, changed).
-std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
-                                const Eigen::Vector3f& first_centre_world, float voxel,
-                                float* values) {
+// What carving one block changed.
+struct BlockChange {
+  int observed = 0;     ///< voxels this view observed
+  bool values = false;  ///< a voxel's value changed (the block's stamp moves)
+  bool counts = false;  ///< a view or carve-vote count changed
+};
+
+// The counts of one block being carved: views, then carve votes (VoxelMap::counts).
+class BlockCounts {
+ public:
+  BlockCounts(std::uint8_t* counts, int carve_votes, BlockChange& change)
+      : counts_(counts), carve_votes_(carve_votes), change_(change) {}
+  // A view observed voxel i, above its sonar's axis (elevation > 0) or not.
+  void viewed(int i, bool above) {
+    std::uint8_t& v = counts_[i];
+    const std::uint8_t side = above ? VoxelMap::kSeenAbove : VoxelMap::kSeenBelow;
+    const std::uint8_t next = static_cast<std::uint8_t>(
+        ((v & VoxelMap::kViewCountMask) < VoxelMap::kViewCountMask ? v + 1 : v) | side);
+    if (next != v) {
+      v = next;
+      change_.counts = true;
+    }
+  }
+  // One view's vote to carve voxel i; true once enough views agree.
+  bool votedOut(int i) {
+    std::uint8_t& votes = counts_[VoxelMap::kBlockVoxels + i];
+    bump(votes);
+    return votes >= carve_votes_;
+  }
+
+ private:
+  void bump(std::uint8_t& c) {
+    if (c < 255) {
+      ++c;
+      change_.counts = true;
+    }
+  }
+  std::uint8_t* counts_;
+  int carve_votes_;
+  BlockChange& change_;
+};
+
+// Carves the 512 voxels of one block in `values` and `counts`.
+BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
+                       const Eigen::Vector3f& first_centre_world, float voxel, float* values,
+                       std::uint8_t* counts) {
   const Eigen::Vector3f p0 = f.R_sonar_world * first_centre_world + f.t_sonar_world;
   const Eigen::Vector3f dx = f.R_sonar_world.col(0) * voxel;
   const Eigen::Vector3f dy = f.R_sonar_world.col(1) * voxel;
@@ -93,12 +137,27 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
   const float sin2_carved = f.sin2_carved;
   const float bin_min = g.binMin();
   const float inv_res = g.binInvResolution();
-  int observed = 0;
-  bool changed = false;
+  BlockChange change;
+  BlockCounts count(counts, f.carve_votes, change);
+  // A view that finds voxel i lit at `level` (0: a vote to carve it).
+  const auto observe = [&](int i, float level, bool above) {
+    ++change.observed;
+    count.viewed(i, above);
+    if (level <= 0.0f) {
+      if (count.votedOut(i)) {
+        values[i] = 0.0f;
+        change.values = true;
+      }
+    } else if (level < values[i]) {
+      values[i] = level;
+      change.values = true;
+    }
+  };
   for (int z = 0; z < kSide; ++z) {
     for (int y = 0; y < kSide; ++y) {
       Eigen::Vector3f p = p0 + static_cast<float>(y) * dy + static_cast<float>(z) * dz;
-      float* v = values + (z * kSide + y) * kSide;
+      const int row_start = (z * kSide + y) * kSide;
+      float* v = values + row_start;
       for (int x = 0; x < kSide; ++x, p += dx) {
         if (v[x] == 0.0f) {
           continue;  // carved: no view can change it, so skip the projection
@@ -149,15 +208,11 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
           } else if (!in_aperture) {
             continue;  // outside +-aperture/2 a view carves; it does not keep
           }
-          ++observed;
-          if (bound < v[x]) {
-            v[x] = bound;
-            changed = true;
-          }
+          observe(row_start + x, bound, p.z() < 0.0f);
           continue;
         }
-        ++observed;
         if (f.log_odds) {
+          ++change.observed;
           const float prob = std::clamp(intensity, 1e-4f, 1.0f - 1e-4f);
           const float evidence = std::log(prob / (1.0f - prob)) - f.arc_prior;
           float fused = v[x] == VoxelMap::kUnknown ? evidence : v[x] + evidence;
@@ -169,16 +224,15 @@ std::pair<int, bool> carveBlock(const CarvingGeometry& g, const FrameView& f,
           }
           if (fused != v[x]) {
             v[x] = fused;
-            changed = true;
+            change.values = true;
           }
-        } else if (intensity < v[x]) {
-          v[x] = intensity;
-          changed = true;
+          continue;
         }
+        observe(row_start + x, intensity, p.z() < 0.0f);
       }
     }
   }
-  return {observed, changed};
+  return change;
 }
 
 bool allCarved(const float* values) {
@@ -189,7 +243,11 @@ bool allCarved(const float* values) {
 
 FastCarver::FastCarver(VoxelMap& map, const SonarModel& sonar, const CarveParams& params,
                        ThreadPool& pool)
-    : map_(map), params_(params), geometry_(sonar, params), pool_(pool) {}
+    : map_(map), params_(params), geometry_(sonar, params), pool_(pool) {
+  if (params_.carve_votes < 1 || (params_.carve_votes > 1 && !map_.hasCounts())) {
+    throw Error("carving", "carve_votes", "expected 1, or a map that keeps its voxels' counts");
+  }
+}
 
 IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar,
                                      std::uint32_t stamp, const VisibilityLimit& visibility) {
@@ -211,6 +269,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   frame.beam_aware = carvesMainLobe(sonar, params_);
   frame.dark_is_exact = params_.dark_pixels == CarveParams::DarkPixels::Exact;
   frame.keep_level = static_cast<float>(params_.keep_level);
+  frame.carve_votes = params_.carve_votes;
   const double half_elevation =
       frame.beam_aware ? carvedHalfElevation(pixels, sonar, frame.keep_level, frame.dark_is_exact,
                                              geometry_.carvedHalfElevation())
@@ -227,18 +286,11 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   }
 
   // Blocks of the map inside the frustum's bounding box.
-  Eigen::AlignedBox3d box =
-      geometry_.frustumBounds(T_world_sonar, half_elevation).intersection(map_.bounds());
-  if (box.isEmpty()) {
+  Eigen::Vector3i lo, hi;
+  if (!map_.blockSpan(geometry_.frustumBounds(T_world_sonar, half_elevation), lo, hi)) {
     return {};
   }
   const double block = map_.blockSize();
-  const Eigen::Vector3i lo =
-      ((box.min() / block).array().floor().cast<int>().matrix() - map_.firstBlock())
-          .cwiseMax(Eigen::Vector3i::Zero());
-  const Eigen::Vector3i hi =
-      ((box.max() / block).array().floor().cast<int>().matrix() - map_.firstBlock())
-          .cwiseMin(map_.blockDims() - Eigen::Vector3i::Ones());
   const Eigen::Vector3i span = hi - lo + Eigen::Vector3i::Ones();
   const auto lines = static_cast<std::size_t>(span.y()) * static_cast<std::size_t>(span.z());
   const double voxel = map_.voxelSize();
@@ -247,6 +299,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   std::atomic<std::size_t> visited{0}, changed_blocks{0}, observed{0};
   pool_.parallelFor(lines, 4, [&](std::size_t begin, std::size_t end) {
     alignas(64) float scratch[VoxelMap::kBlockVoxels];
+    alignas(64) std::uint8_t scratch_counts[VoxelMap::kCountBytes];
     std::size_t my_visited = 0, my_changed = 0, my_observed = 0;
     for (std::size_t line = begin; line < end; ++line) {
       const int by = lo.y() + static_cast<int>(line % static_cast<std::size_t>(span.y()));
@@ -265,20 +318,29 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
         }
         ++my_visited;
         float* values = map_.values(b);
+        std::uint8_t* counts = map_.counts(b);
         if (values == nullptr) {
           std::fill(std::begin(scratch), std::end(scratch), VoxelMap::kUnknown);
           values = scratch;
         }
+        if (counts == nullptr) {
+          // A new block, or a map without counts (one vote carves: counting from 0 each frame
+          // gives the same answer).
+          std::fill(std::begin(scratch_counts), std::end(scratch_counts), std::uint8_t{0});
+          counts = scratch_counts;
+        }
         const Eigen::Vector3f first =
             (origin + Eigen::Vector3d::Constant(0.5 * voxel)).cast<float>();
-        const auto [seen, changed] =
-            carveBlock(geometry_, frame, first, static_cast<float>(voxel), values);
-        my_observed += static_cast<std::size_t>(seen);
-        if (!changed) {
-          continue;
+        const BlockChange change =
+            carveBlock(geometry_, frame, first, static_cast<float>(voxel), values, counts);
+        my_observed += static_cast<std::size_t>(change.observed);
+        if (change.values) {
+          ++my_changed;
+          map_.storeBlock(b, allCarved(values) ? nullptr : values, stamp, counts);
+        } else if (change.counts && values == scratch && map_.hasCounts()) {
+          // Votes on voxels not yet carved nor lit: kept for the views to come.
+          map_.storeBlock(b, values, map_.stamp(b), counts);
         }
-        ++my_changed;
-        map_.storeBlock(b, allCarved(values) ? nullptr : values, stamp);
       }
     }
     visited += my_visited;

@@ -10,7 +10,7 @@ namespace {
 class FastEngine final : public Carver {
  public:
   explicit FastEngine(const CarverSetup& setup)
-      : map_(setup.params.voxel_size_m, *setup.params.region),
+      : map_(setup.params.voxel_size_m, *setup.params.region, keepsViewCounts(setup.params)),
         carver_(map_, setup.sonar, setup.params, setup.pool) {}
 
   void integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar, std::uint32_t stamp,

@@ -12,8 +12,8 @@ int floorDiv(int a, int b) {
 }
 }  // namespace
 
-VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds)
-    : voxel_size_m_(voxel_size_m) {
+VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds, bool with_counts)
+    : voxel_size_m_(voxel_size_m), with_counts_(with_counts) {
   if (!(voxel_size_m > 0.0) || bounds.isEmpty()) {
     throw Error("voxel map", "", "expected a positive voxel size and a non-empty region");
   }
@@ -34,6 +34,7 @@ VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds)
   slot_.assign(n, -1);
   stamp_.assign(n, 0);
   chunks_.reserve(n / kChunkBlocks + 1);
+  count_chunks_.reserve(n / kChunkBlocks + 1);
 }
 
 Eigen::AlignedBox3d VoxelMap::bounds() const {
@@ -48,12 +49,39 @@ Eigen::Vector3i VoxelMap::blockCoords(std::size_t index) const {
                          static_cast<int>(index / (nx * ny)));
 }
 
+bool VoxelMap::blockSpan(const Eigen::AlignedBox3d& box, Eigen::Vector3i& lo,
+                         Eigen::Vector3i& hi) const {
+  const Eigen::AlignedBox3d inside = box.intersection(bounds());
+  if (inside.isEmpty()) {
+    return false;
+  }
+  const double block = blockSize();
+  lo = ((inside.min() / block).array().floor().cast<int>().matrix() - first_block_)
+           .cwiseMax(Eigen::Vector3i::Zero());
+  hi = ((inside.max() / block).array().floor().cast<int>().matrix() - first_block_)
+           .cwiseMin(dims_ - Eigen::Vector3i::Ones());
+  return (lo.array() <= hi.array()).all();
+}
+
 const float* VoxelMap::values(std::size_t block) const {
   return state_[block] == BlockState::Mixed ? slotValues(slot_[block]) : nullptr;
 }
 
 float* VoxelMap::values(std::size_t block) {
   return state_[block] == BlockState::Mixed ? slotValues(slot_[block]) : nullptr;
+}
+
+const std::uint8_t* VoxelMap::views(std::size_t block) const {
+  return with_counts_ && state_[block] == BlockState::Mixed ? slotCounts(slot_[block]) : nullptr;
+}
+
+const std::uint8_t* VoxelMap::carveVotes(std::size_t block) const {
+  const std::uint8_t* v = views(block);
+  return v == nullptr ? nullptr : v + kBlockVoxels;
+}
+
+std::uint8_t* VoxelMap::counts(std::size_t block) {
+  return with_counts_ && state_[block] == BlockState::Mixed ? slotCounts(slot_[block]) : nullptr;
 }
 
 Eigen::Vector3i VoxelMap::voxelOf(const Eigen::Vector3d& p_world) const {
@@ -83,7 +111,8 @@ float VoxelMap::value(const Eigen::Vector3i& voxel) const {
   return values(block)[(in.z() * kBlockSide + in.y()) * kBlockSide + in.x()];
 }
 
-void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint32_t stamp) {
+void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint32_t stamp,
+                          const std::uint8_t* new_counts) {
   stamp_[block] = stamp;
   if (new_values == nullptr) {
     if (state_[block] == BlockState::Mixed) {
@@ -99,6 +128,9 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
     if (free_slots_.empty()) {
       if (slots_used_ % kChunkBlocks == 0) {
         chunks_.push_back(std::make_unique<float[]>(kChunkBlocks * kBlockVoxels));
+        if (with_counts_) {
+          count_chunks_.push_back(std::make_unique<std::uint8_t[]>(kChunkBlocks * kCountBytes));
+        }
       }
       slot_[block] = static_cast<std::int32_t>(slots_used_++);
     } else {
@@ -106,10 +138,20 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
       free_slots_.pop_back();
     }
     state_[block] = BlockState::Mixed;
+    if (with_counts_ && new_counts == nullptr) {
+      std::fill_n(slotCounts(slot_[block]), kCountBytes, std::uint8_t{0});
+    }
   }
   float* target = slotValues(slot_[block]);
   if (target != new_values) {
     std::copy(new_values, new_values + kBlockVoxels, target);
+  }
+  if (!with_counts_ || new_counts == nullptr) {
+    return;
+  }
+  std::uint8_t* target_counts = slotCounts(slot_[block]);
+  if (target_counts != new_counts) {
+    std::copy(new_counts, new_counts + kCountBytes, target_counts);
   }
 }
 
@@ -175,7 +217,8 @@ std::size_t VoxelMap::blockCount(BlockState s) const {
 std::size_t VoxelMap::memoryBytes() const {
   return state_.capacity() * sizeof(BlockState) + slot_.capacity() * sizeof(std::int32_t) +
          stamp_.capacity() * sizeof(std::uint32_t) +
-         chunks_.size() * kChunkBlocks * kBlockVoxels * sizeof(float);
+         chunks_.size() * kChunkBlocks * kBlockVoxels * sizeof(float) +
+         count_chunks_.size() * kChunkBlocks * kCountBytes;
 }
 
 }  // namespace sonarcarve

@@ -9,6 +9,11 @@
 //
 // Voxel (i, j, k) covers [i, i+1) * voxel_size along north, east, down, as OctoMap's keys do
 // (key = index + 32768), so both engines and exported .bt files share one grid.
+// Each voxel of a Mixed block also keeps two bytes: its views (how many observed it, to 63,
+// and whether any saw it above and any below its axis: a voxel seen from both sides has had
+// the sonar's axis pass over it, the views that resolve its elevation; pose refinement aligns
+// frames to such settled voxels) and the views that voted to carve it (to 255: robust
+// carving carves a voxel once `CarveParams::carve_votes` views agree).
 // Limits: the box must hold at most 2^31 blocks; indices fit OctoMap's +-32768 voxels.
 // Not thread safe for writing; FastCarver coordinates its threads.
 #pragma once
@@ -30,9 +35,11 @@ class VoxelMap {
   static constexpr float kUnknown = std::numeric_limits<float>::infinity();
   enum class BlockState : std::uint8_t { Unknown, Free, Mixed };
 
-  /// Covers `bounds` (world NED, metres), rounded outwards to whole blocks. Throws Error if
-  /// the voxel size is not positive or the box is empty or too large.
-  VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds);
+  /// Covers `bounds` (world NED, metres), rounded outwards to whole blocks; keeps the voxels'
+  /// counts when `with_counts`. Throws Error if the voxel size is not positive or the box is
+  /// empty or too large.
+  VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds, bool with_counts = false);
+  bool hasCounts() const { return with_counts_; }
 
   double voxelSize() const { return voxel_size_m_; }
   double blockSize() const { return voxel_size_m_ * kBlockSide; }
@@ -47,10 +54,22 @@ class VoxelMap {
     return (static_cast<std::size_t>(rel.z()) * dims_.y() + rel.y()) * dims_.x() + rel.x();
   }
   Eigen::Vector3i blockCoords(std::size_t index) const;
+  /// The box-relative blocks [lo, hi] (inclusive) that `box` (world) touches; false if none.
+  bool blockSpan(const Eigen::AlignedBox3d& box, Eigen::Vector3i& lo, Eigen::Vector3i& hi) const;
   BlockState state(std::size_t block) const { return state_[block]; }
   /// The 512 values of a Mixed block (x fastest, then y, then z); nullptr otherwise.
   const float* values(std::size_t block) const;
   float* values(std::size_t block);
+  /// The counts of a Mixed block's voxels: views(block)[i] and carveVotes(block)[i] are those
+  /// of values(block)[i]; nullptr otherwise and in a map without counts.
+  const std::uint8_t* views(std::size_t block) const;
+  const std::uint8_t* carveVotes(std::size_t block) const;
+  /// Both counts of a Mixed block as one array of 2 x 512 (views, then carve votes).
+  std::uint8_t* counts(std::size_t block);
+  static constexpr int kCountBytes = 2 * kBlockVoxels;
+  static constexpr std::uint8_t kViewCountMask = 0x3F;
+  static constexpr std::uint8_t kSeenAbove = 0x40;
+  static constexpr std::uint8_t kSeenBelow = 0x80;
   /// Frame stamp of the last change of a block (0: never changed).
   std::uint32_t stamp(std::size_t block) const { return stamp_[block]; }
 
@@ -70,8 +89,11 @@ class VoxelMap {
   float value(const Eigen::Vector3i& voxel) const;
 
   /// Replaces a block's state after carving: `values` (512) are the block's new contents, or
-  /// nullptr for Free. Thread safe against other calls for *different* blocks.
-  void storeBlock(std::size_t block, const float* values, std::uint32_t stamp);
+  /// nullptr for Free; `counts` (kCountBytes, or nullptr: zeros for a block that was not
+  /// Mixed, unchanged otherwise) its counts. Thread safe against other calls for *different*
+  /// blocks.
+  void storeBlock(std::size_t block, const float* values, std::uint32_t stamp,
+                  const std::uint8_t* counts = nullptr);
 
   /// Calls f(global voxel index, value) for every occupied voxel (0 < value < inf).
   void forEachOccupied(const std::function<void(const Eigen::Vector3i&, float)>& f) const;
@@ -86,6 +108,7 @@ class VoxelMap {
 
  private:
   double voxel_size_m_;
+  bool with_counts_;
   Eigen::Vector3i first_block_;
   Eigen::Vector3i dims_;
   std::vector<BlockState> state_;
@@ -98,7 +121,12 @@ class VoxelMap {
     const auto s = static_cast<std::size_t>(slot);
     return chunks_[s / kChunkBlocks].get() + (s % kChunkBlocks) * kBlockVoxels;
   }
+  std::uint8_t* slotCounts(std::int32_t slot) const {
+    const auto s = static_cast<std::size_t>(slot);
+    return count_chunks_[s / kChunkBlocks].get() + (s % kChunkBlocks) * kCountBytes;
+  }
   std::vector<std::unique_ptr<float[]>> chunks_;  // capacity reserved up front
+  std::vector<std::unique_ptr<std::uint8_t[]>> count_chunks_;
   std::size_t slots_used_ = 0;
   std::vector<std::int32_t> free_slots_;
   std::mutex storage_mutex_;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "carve/carving_geometry.h"
 #include "common/error.h"
@@ -43,17 +44,22 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
   CarveStageResult result;
   result.carve = params_.carve;
   result.carve.region = bounds;
+  result.carve.keep_view_counts = params_.refinement.enabled;
   if (source.probabilities()) {
     result.carve.fusion = CarveParams::Fusion::LogOdds;
     result.carve.intensity_threshold = 0.0;
   }
   result.carver = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
+  std::optional<PoseRefiner> refiner;
+  if (params_.refinement.enabled && result.carver->blockMap() != nullptr) {
+    refiner.emplace(*result.carver->blockMap(), sonar_, result.carve, params_.refinement, pool_);
+  }
   for (std::size_t n = 0; n < frames.size(); ++n) {
     if (progress.cancelled()) {
       result.cancelled = true;
       break;
     }
-    const PosedFrame& f = frames[n];
+    PosedFrame f = frames[n];
     Frame frame;
     try {
       frame = source.load(f.index);
@@ -62,6 +68,12 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
       continue;
     }
     const auto t0 = Clock::now();
+    if (refiner) {
+      FramePoseRefinement r{f.index, f.T_world_sonar,
+                            refiner->refine(frame.image, f.T_world_sonar)};
+      f.T_world_sonar = r.correction.applied(r.T_world_sonar_prior);
+      result.refinement.push_back(r);
+    }
     const auto stamp = static_cast<std::uint32_t>(n + 1);
     result.carver->integrate(frame.image, f.T_world_sonar, stamp);
     result.carve_ms.push_back(msSince(t0));

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "carve/carver.h"
+#include "carve/pose_refiner.h"
 #include "common/progress.h"
 #include "pipeline/frame_stage.h"
 #include "pipeline/map_updates.h"
@@ -18,11 +19,22 @@ struct CarveStageParams {
   CarveParams carve;
   /// Second pass in which each frame carves only what it sees past the first pass's surface.
   bool occlusion_aware = false;
+  /// Fast engine: frames aligned to the map so far before they carve.
+  PoseRefinementParams refinement;
+};
+
+/// A frame's pose as navigation gave it and as carving used it.
+struct FramePoseRefinement {
+  std::size_t index = 0;  ///< in the mission
+  Eigen::Isometry3d T_world_sonar_prior = Eigen::Isometry3d::Identity();
+  PoseCorrection correction;
 };
 
 struct CarveStageResult {
   std::unique_ptr<Carver> carver;
-  std::vector<PosedFrame> used;  ///< frames that loaded and were carved
+  std::vector<PosedFrame> used;  ///< frames that loaded and were carved, at the poses used
+  /// Pose refinement, one per used frame (empty when it is off).
+  std::vector<FramePoseRefinement> refinement;
   std::vector<double> carve_ms;  ///< per used frame (both passes)
   CarveParams carve;             ///< the parameters as used: region = the map's bounds
   bool cancelled = false;

@@ -69,6 +69,9 @@ bool usesDetector(const Params& p) {
 bool usesFastEngine(const Params& p) {
   return p.engine == Engine::Fast;
 }
+bool refinesPoses(const Params& p) {
+  return p.engine == Engine::Fast && p.pose_refinement.enabled;
+}
 bool buildsMesh(const Params& p) {
   return p.mesh_enabled;
 }
@@ -221,6 +224,15 @@ std::vector<ParamSpec> makeSchema() {
                .suffix = " dB"},
        .access = field([](auto& p) -> auto& { return p.carve.dynamic_range_db; }),
        .applies = usesFastEngine},
+      {.key = "carve_votes",
+       .unit = "views",
+       .range = {.min = 1.0, .max = 255.0},
+       .help = "fast engine: a voxel is carved once this many views have found it empty; 1 "
+               "is the seed paper's rule, more tolerate views a little off their navigation",
+       .flag = "--carve-votes",
+       .gui = {.group = "Carving", .label = "Carve votes", .advanced = true, .min = 1, .max = 255},
+       .access = field([](auto& p) -> auto& { return p.carve.carve_votes; }),
+       .applies = usesFastEngine},
       {.key = "voxel_size_m",
        .unit = "m",
        .range = kPositive,
@@ -303,6 +315,56 @@ std::vector<ParamSpec> makeSchema() {
        .gui = {.group = "Carving", .label = "Occlusion-aware carving", .advanced = true},
        .access = field([](auto& p) -> auto& { return p.occlusion_aware_carving; }),
        .applies = usesFastEngine},
+
+      // Navigation.
+      {.key = "pose_refinement.enabled",
+       .help = "fast engine: align each frame to the map carved so far, within a window around "
+               "its navigation, before it carves (drifting navigation); false: carve at the "
+               "navigation's poses",
+       .flag = "--pose-refinement",
+       .gui = {.group = "Navigation", .label = "Pose refinement"},
+       .access = field([](auto& p) -> auto& { return p.pose_refinement.enabled; }),
+       .applies = usesFastEngine},
+      {.key = "pose_refinement.max_translation_m",
+       .unit = "m",
+       .range = kNonNegative,
+       .help = "pose refinement: the farthest a frame is moved from its navigation, on each axis",
+       .flag = "--refine-max-translation",
+       .gui = {.group = "Navigation",
+               .label = "Largest shift",
+               .advanced = true,
+               .max = 500,
+               .step = 1,
+               .decimals = 1,
+               .factor = 100,
+               .suffix = " cm"},
+       .access = field([](auto& p) -> auto& { return p.pose_refinement.max_translation_m; }),
+       .applies = refinesPoses},
+      {.key = "pose_refinement.max_rotation_deg",
+       .unit = "degrees",
+       .degrees = true,
+       .range = {.min = 0.0, .max = 90.0},
+       .help = "pose refinement: the farthest a frame is turned from its navigation, about each "
+               "axis",
+       .flag = "--refine-max-rotation",
+       .gui = {.group = "Navigation",
+               .label = "Largest turn",
+               .advanced = true,
+               .max = 90,
+               .step = 0.5,
+               .suffix = "°"},
+       .access = field([](auto& p) -> auto& { return p.pose_refinement.max_rotation_rad; }),
+       .applies = refinesPoses},
+      {.key = "pose_refinement.settled_views",
+       .unit = "views",
+       .range = {.min = 1.0, .max = 63.0},
+       .help = "pose refinement: a voxel guides the alignment once this many views have "
+               "observed it, from both sides of their axes, and it is still occupied",
+       .flag = "--refine-settled-views",
+       .gui =
+           {.group = "Navigation", .label = "Settled after", .advanced = true, .min = 1, .max = 63},
+       .access = field([](auto& p) -> auto& { return p.pose_refinement.settled_views; }),
+       .applies = refinesPoses},
 
       // Frames.
       {.key = "frames.first",

@@ -61,7 +61,8 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     throw Error(mission_.folder.string(), "", "no frame can be placed in the world");
   }
   // Denoise, then carve.
-  CarveStageParams stage{params_.engine, params_.carve, params_.occlusion_aware_carving};
+  CarveStageParams stage{params_.engine, params_.carve, params_.occlusion_aware_carving,
+                         params_.pose_refinement};
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
   requireBoundedSizes(bounds, sonar_, params_.carve);
@@ -96,6 +97,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
       carving.run(posed, bounds, frames, progress, updates ? &*updates : nullptr, skip);
   result.cancelled = carved.cancelled;
   result.frames_used = carved.used.size();
+  result.refinement = std::move(carved.refinement);
   if (carved.used.empty()) {
     if (result.cancelled) {
       return result;

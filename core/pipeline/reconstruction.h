@@ -16,6 +16,7 @@
 #include "io/mission.h"
 #include "mesh/surface_mesher.h"
 #include "occlusion/surface_points.h"
+#include "pipeline/carve_stage.h"
 #include "pipeline/keep_level.h"
 #include "pipeline/map_updates.h"
 #include "pipeline/reconstruction_params.h"
@@ -31,6 +32,8 @@ struct ReconstructionResult {
   std::string detector;   ///< the detector that ran (`auto` made concrete)
   std::string denoising;  ///< which noise model it used and why, in words
   KeepLevel keep_level;   ///< beam-aware carving's keep level (level 0 when not beam-aware)
+  /// Pose refinement of each carved frame (empty when it is off).
+  std::vector<FramePoseRefinement> refinement;
   std::vector<FrameProblem> skipped;
   bool cancelled = false;
   std::size_t occupied_voxels = 0;  ///< all occupied voxels of the carved map

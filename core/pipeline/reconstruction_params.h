@@ -10,6 +10,7 @@
 
 #include "carve/carve_params.h"
 #include "carve/carver.h"
+#include "carve/pose_refiner.h"
 #include "common/enum_names.h"
 #include "denoise/detector.h"
 #include "mesh/surface_mesher.h"
@@ -52,6 +53,8 @@ struct ReconstructionParams {
   /// shadowed from some views are not carved away by them. On the riser demo it gained 0.7 %
   /// completeness for 2.7 times the carving time: off by default.
   bool occlusion_aware_carving = false;
+  /// Fast engine: each frame aligned to the map carved so far before it carves (issue 15).
+  PoseRefinementParams pose_refinement;
 
   /// A surface voxel must be the first return in this many views: ghosts of the elevation
   /// ambiguity are first returns in fewer views than a real surface, seen from every view

@@ -6,6 +6,7 @@
 #include "eval/evaluator.h"
 #include "geometry/scene_io.h"
 #include "io/frame_source.h"
+#include "pipeline/refined_track.h"
 
 namespace sonarcarve {
 
@@ -33,6 +34,9 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                                     {"dynamic_range_db", params.carve.dynamic_range_db},
                                     {"keep_level", result.keep_level.level},
                                     {"frames_measured", result.keep_level.frames}};
+  }
+  if (!result.refinement.empty()) {
+    report["pose_refinement"] = poseRefinementReport(mission, result.refinement);
   }
   if (mission.source) {
     report["source"] = mission.source->kind();

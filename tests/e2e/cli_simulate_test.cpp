@@ -93,6 +93,39 @@ TEST(CliNavError, WritesTheMissionsNavigationWithSeededErrors) {
             0);
 }
 
+TEST(CliReconstruct, PoseRefinementWritesTheRefinedTrackAndReportsItsError) {
+  // A drifting track (ground truth kept beside it): the refined track is written with the
+  // navigation's columns, one pose per frame, and the report compares both with the truth.
+  test::ScratchDir dir;
+  const auto mission = dir.path() / "riser";
+  ASSERT_EQ(runCli("simulate --scene riser --noise none --max-frames 30 --seed 5 "
+                   "--nav-error-position 0.005 --nav-error-attitude 0.05 --out " +
+                   quoted(mission))
+                .exit_code,
+            0);
+  const auto out = dir.path() / "out";
+  const auto on = runCli("reconstruct " + quoted(mission) + " --out " + quoted(out) +
+                         " --mesh false --pose-refinement true");
+  ASSERT_EQ(on.exit_code, 0) << on.output;
+  const NavTrack refined = readNavCsv(out / "refined_nav.csv");
+  const Mission m = readMission(mission);
+  ASSERT_EQ(refined.samples().size(), m.frames.size());
+  for (std::size_t i = 0; i < m.frames.size(); ++i) {
+    EXPECT_EQ(refined.samples()[i].time_s, m.frames[i].time_s);
+  }
+  const std::string report = test::readText(out / "report.json");
+  for (const char* key : {"\"pose_refinement\"", "\"per_frame\"", "\"track_error\"",
+                          "\"navigation\"", "\"refined\"", "\"rms_position_m\""}) {
+    EXPECT_NE(report.find(key), std::string::npos) << key;
+  }
+  // Off again, into the same folder: no refined track of the earlier run is left behind.
+  const auto off = runCli("reconstruct " + quoted(mission) + " --out " + quoted(out) +
+                          " --mesh false --pose-refinement false");
+  ASSERT_EQ(off.exit_code, 0) << off.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "refined_nav.csv"));
+  EXPECT_EQ(test::readText(out / "report.json").find("\"pose_refinement\""), std::string::npos);
+}
+
 TEST(CliSimulate, BadSceneOrTrajectoryFailsWithAMessage) {
   test::ScratchDir dir;
   const auto out = quoted(dir.path() / "m");
