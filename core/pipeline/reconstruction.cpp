@@ -64,7 +64,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   CarveStageParams stage{params_.engine, params_.carve, params_.occlusion_aware_carving};
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
-  requireBoundedSizes(bounds, sonar_, params_.carve);
+  requireBoundedSizes(bounds, sonar_, params_.carve, pool_.size());
   NoiseChoice noise;
   try {
     noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);
