@@ -61,6 +61,8 @@ std::vector<CatalogueCase> fileKindCases();
 std::vector<CatalogueCase> contentCases();
 std::vector<CatalogueCase> limitCases();
 std::vector<CatalogueCase> outputCases();
+std::vector<CatalogueCase> oculusCases();
+std::vector<CatalogueCase> readerCases();
 
 // Inputs for the cases.
 inline constexpr const char* kPreviousContent = "a file of an earlier run\n";

@@ -1,0 +1,57 @@
+#include "io/stl_check.h"
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+
+constexpr std::uintmax_t kHeaderBytes = 84;  // 80 bytes of text, u32 triangle count
+constexpr std::uintmax_t kTriangleBytes = 50;
+
+std::string fileText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+void checkStlFile(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const std::string bytes = fileText(path);
+  const std::uintmax_t size = bytes.size();
+  std::uint32_t declared = 0;
+  if (size >= kHeaderBytes) {
+    std::memcpy(&declared, bytes.data() + 80, sizeof declared);
+  }
+  const std::uintmax_t binary_size = kHeaderBytes + kTriangleBytes * std::uintmax_t{declared};
+  const auto first = bytes.find_first_not_of(" \t\r\n");
+  const bool says_solid = first != std::string::npos && bytes.compare(first, 5, "solid") == 0;
+  if (says_solid && !(size >= kHeaderBytes && size >= binary_size && declared > 0)) {
+    if (bytes.find("endsolid") == std::string::npos) {
+      throw Error(file, bytePlace(size), "truncated ASCII STL: expected 'endsolid' at the end");
+    }
+    return;
+  }
+  if (size < kHeaderBytes) {
+    throw Error(file, bytePlace(size),
+                "truncated binary STL: expected an 80-byte header and a triangle count (84 "
+                "bytes), the file has " +
+                    std::to_string(size));
+  }
+  if (size < binary_size) {
+    throw Error(file, bytePlace(size),
+                "truncated binary STL: the header declares " + std::to_string(declared) +
+                    " triangles (84 + 50 x " + std::to_string(declared) + " = " +
+                    std::to_string(binary_size) + " bytes), the file has " + std::to_string(size));
+  }
+}
+
+}  // namespace sonarcarve
