@@ -1,5 +1,6 @@
 #include "io/stl_check.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -21,6 +22,19 @@ std::string fileText(const std::filesystem::path& path) {
   return text.str();
 }
 
+// VTK reads a file as ASCII only if its first 256 bytes are text; "solid" at the start is not
+// enough (binary headers often begin so). The same rule here, so that both agree.
+bool looksLikeText(const std::string& bytes) {
+  const std::size_t n = std::min<std::size_t>(bytes.size(), 256);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(bytes[i]);
+    if (c > 127 || (c < 32 && c != '\t' && c != '\n' && c != '\r')) {
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 void checkStlFile(const std::filesystem::path& path) {
@@ -33,7 +47,8 @@ void checkStlFile(const std::filesystem::path& path) {
   }
   const std::uintmax_t binary_size = kHeaderBytes + kTriangleBytes * std::uintmax_t{declared};
   const auto first = bytes.find_first_not_of(" \t\r\n");
-  const bool says_solid = first != std::string::npos && bytes.compare(first, 5, "solid") == 0;
+  const bool says_solid =
+      first != std::string::npos && bytes.compare(first, 5, "solid") == 0 && looksLikeText(bytes);
   if (says_solid && !(size >= kHeaderBytes && size >= binary_size && declared > 0)) {
     if (bytes.find("endsolid") == std::string::npos) {
       throw Error(file, bytePlace(size), "truncated ASCII STL: expected 'endsolid' at the end");

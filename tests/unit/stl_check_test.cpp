@@ -42,6 +42,14 @@ TEST(StlCheck, CutFilesNameTheByteAndWhatWasExpected) {
                      "= 584 bytes), the file has 134"});
   test::expectError([&] { checkStlFile(write(dir, std::string(60, 's'))); },
                     {"mesh.stl: byte 60: truncated binary STL: expected an 80-byte header"});
+  // "solid" and "endsolid" but bytes that are not text: VTK reads it as binary, and its count
+  // (bytes 80 to 83) asked 6 GB (found by the mesh fuzzer).
+  std::string not_text = "solid t\nvertex 2.1 ";
+  not_text += std::string("\x01\x00\x00\x00\x00\xe6", 6);
+  not_text.resize(112, 'x');
+  not_text.replace(90, 10, "endsolid t");
+  test::expectError([&] { checkStlFile(write(dir, not_text)); },
+                    {"mesh.stl: byte 112: truncated binary STL: the header declares"});
   test::expectError([&] { checkStlFile(write(dir, "solid t\nfacet normal 0 0 1\nouter loop\n")); },
                     {"mesh.stl: byte 38: truncated ASCII STL: expected 'endsolid' at the end"});
 }
