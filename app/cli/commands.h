@@ -4,6 +4,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
 
 #include "common/thread_pool.h"
 
@@ -13,7 +15,9 @@ void addInfoCommand(CLI::App& app, int& exit_code);
 void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code);
 void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code);
 void addFrameCommand(CLI::App& app, int& exit_code);
-void addReconstructCommand(CLI::App& app, ThreadPool& pool, int& exit_code);
+/// `arguments`: the command line, recorded in the run's manifest.
+void addReconstructCommand(CLI::App& app, ThreadPool& pool,
+                           const std::vector<std::string>& arguments, int& exit_code);
 void addEvaluateCommand(CLI::App& app, ThreadPool& pool, int& exit_code);
 void addNoiseModelCommand(CLI::App& app, int& exit_code);
 void addExportCommand(CLI::App& app, int& exit_code);

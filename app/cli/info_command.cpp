@@ -110,6 +110,10 @@ void infoOnLog(const std::string& path, bool json, double aperture_deg) {
                 {"frequency_hz", plan.frequency_hz},
                 {"speed_of_sound_mps", plan.speed_of_sound_mps},
                 {"problems", log.problems()},
+                {"skipped",
+                 {{"bytes", log.skipped().bytes},
+                  {"messages", log.skipped().messages},
+                  {"resyncs", log.skipped().resyncs}}},
                 {"notes", log.notes()},
                 {"warnings", warnings}};
     std::cout << j.dump(2) << "\n";
@@ -125,6 +129,8 @@ void infoOnLog(const std::string& path, bool json, double aperture_deg) {
   for (const std::string& p : log.problems()) {
     std::printf("  %s\n", p.c_str());
   }
+  std::printf("Skipped      %zu bytes, %zu messages, %zu resyncs\n", log.skipped().bytes,
+              log.skipped().messages, log.skipped().resyncs);
   for (const std::string& line : linesOf(log.notes(), warnings)) {
     std::printf("Note         %s\n", line.c_str());
   }

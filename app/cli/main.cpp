@@ -1,6 +1,8 @@
 // sonarcarve-cli: the headless tool. Every verb drives the same core as the GUI.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cli/commands.h"
 #include "common/error.h"
@@ -15,7 +17,8 @@ int main(int argc, char** argv) {
   sonarcarve::cli::addInfoCommand(app, exit_code);
   sonarcarve::cli::addFrameCommand(app, exit_code);
   sonarcarve::cli::addSimulateCommand(app, pool, exit_code);
-  sonarcarve::cli::addReconstructCommand(app, pool, exit_code);
+  const std::vector<std::string> arguments(argv, argv + argc);
+  sonarcarve::cli::addReconstructCommand(app, pool, arguments, exit_code);
   sonarcarve::cli::addParamsCommand(app, exit_code);
   sonarcarve::cli::addEvaluateCommand(app, pool, exit_code);
   sonarcarve::cli::addExportCommand(app, exit_code);

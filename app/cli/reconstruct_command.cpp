@@ -1,8 +1,8 @@
 // `sonarcarve-cli reconstruct MISSION|RECORDING --out DIR`: carve, resolve occlusions, export.
 // Writes DIR/surface_points.ply, DIR/mesh.ply and DIR/mesh.stl (world NED, metres), DIR/map.bt
 // (fast engine), DIR/refined_nav.csv (the track as pose refinement corrected it, when on),
-// DIR/params.yaml (what was used) and DIR/report.json; a simulated mission's
-// ground truth, when present, is evaluated too.
+// DIR/params.yaml (what was used), DIR/report.json and DIR/manifest.json (the run and its
+// files); a simulated mission's ground truth, when present, is evaluated too.
 #include <iostream>
 #include <string>
 #include <vector>
@@ -18,6 +18,7 @@
 #include "io/mission.h"
 #include "io/nav_csv.h"
 #include "io/output_folder.h"
+#include "io/run_manifest.h"
 #include "mesh/mesh_export.h"
 #include "pipeline/reconstruction.h"
 #include "pipeline/refined_track.h"
@@ -44,28 +45,49 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
   return p;
 }
 
-// A mesh or map of an earlier run into the same folder that this run did not rewrite would be
-// taken for this run's (export reads mesh.ply): it goes, once this run's files are written.
-void removeEarlierOutputs(const std::filesystem::path& out, const ReconstructionResult& result) {
-  std::vector<std::string> stale;
-  if (!result.map) {
-    stale.push_back("map.bt");
+// Every file a run can write: one of an earlier run that this run does not rewrite is removed
+// when this run ends (io/run_manifest.h), so that `export` cannot take it for this run's.
+const std::vector<std::string> kOutputs = {"surface_points.ply", "map.bt",      "mesh.ply",
+                                           "mesh.stl",           "params.yaml", "report.json",
+                                           "refined_nav.csv"};
+
+void writeOutputs(const std::filesystem::path& out, const Mission& mission,
+                  const ReconstructionParams& params, const ReconstructionResult& result,
+                  const std::string& report, RunManifest& manifest) {
+  writeSurfacePointsPly(result.surface, out / "surface_points.ply");
+  manifest.wrote("surface_points.ply");
+  if (result.map) {
+    writeOccupancyBt(*result.map, out / "map.bt");
+    manifest.wrote("map.bt");
   }
-  if (result.mesh.triangles.empty()) {
-    stale.insert(stale.end(), {"mesh.ply", "mesh.stl"});
+  if (!result.mesh.triangles.empty()) {
+    ExportOptions ply;
+    exportMesh(result.mesh, out / "mesh.ply", ply);
+    manifest.wrote("mesh.ply");
+    ExportOptions stl;
+    stl.format = "stl";
+    exportMesh(result.mesh, out / "mesh.stl", stl);
+    manifest.wrote("mesh.stl");
   }
-  if (result.refinement.empty()) {
-    stale.push_back("refined_nav.csv");
+  if (!result.refinement.empty()) {
+    writeFileAtomically(out / "refined_nav.csv",
+                        navCsvText(refinedTrack(mission, result.refinement)));
+    manifest.wrote("refined_nav.csv");
   }
-  for (const std::string& name : stale) {
-    std::error_code ec;
-    if (std::filesystem::remove(out / name, ec)) {
-      std::cerr << "removed " << (out / name).string() << " of an earlier run\n";
-    }
+  writeFileAtomically(out / "params.yaml", params.toYaml());
+  manifest.wrote("params.yaml");
+  writeFileAtomically(out / "report.json", report);
+  manifest.wrote("report.json");
+}
+
+void reportRemoved(const RunManifest& manifest) {
+  for (const std::filesystem::path& path : manifest.removed()) {
+    std::cerr << "removed " << path.string() << " of an earlier run\n";
   }
 }
 
-int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
+int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
+                   const std::vector<std::string>& arguments) {
   const Mission mission = openMission(o.mission, openOptionsFrom(o.source));
   for (const std::string& warning : mission.warnings) {
     std::cerr << "warning: " << warning << "\n";
@@ -90,31 +112,28 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool) {
   // The report first: it reads the ground truth, and a broken one must fail the run before any
   // file is written.
   const std::string report = reconstructionReport(mission, params, result, pool);
-  writeSurfacePointsPly(result.surface, out / "surface_points.ply");
-  if (result.map) {
-    writeOccupancyBt(*result.map, out / "map.bt");
+  RunManifest manifest(out, arguments, kOutputs);
+  try {
+    writeOutputs(out, mission, params, result, report, manifest);
+  } catch (const Error& e) {
+    try {
+      manifest.finish("failed", e.what());
+    } catch (const Error&) {
+      // The manifest cannot be written either (a full disk): it still says "running".
+    }
+    reportRemoved(manifest);
+    throw;
   }
-  if (!result.mesh.triangles.empty()) {
-    ExportOptions ply;
-    exportMesh(result.mesh, out / "mesh.ply", ply);
-    ExportOptions stl;
-    stl.format = "stl";
-    exportMesh(result.mesh, out / "mesh.stl", stl);
-  }
-  if (!result.refinement.empty()) {
-    writeFileAtomically(out / "refined_nav.csv",
-                        navCsvText(refinedTrack(mission, result.refinement)));
-  }
-  writeFileAtomically(out / "params.yaml", params.toYaml());
-  writeFileAtomically(out / "report.json", report);
-  removeEarlierOutputs(out, result);
+  manifest.finish(result.cancelled ? "cancelled" : "complete");
+  reportRemoved(manifest);
   std::cout << report;
   return result.cancelled ? 130 : 0;
 }
 
 }  // namespace
 
-void addReconstructCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
+void addReconstructCommand(CLI::App& app, ThreadPool& pool,
+                           const std::vector<std::string>& arguments, int& exit_code) {
   auto* cmd = app.add_subcommand("reconstruct", "Carve a 3D map from a mission and export it");
   auto o = std::make_shared<ReconstructOptions>();
   cmd->add_option("mission", o->mission,
@@ -125,7 +144,8 @@ void addReconstructCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "Parameters YAML (as saved by the GUI or params.yaml)");
   o->flags = addParamFlags(*cmd);
   addSourceFlags(*cmd, o->source);
-  cmd->callback([o, &pool, &exit_code] { exit_code = runReconstruct(*o, pool); });
+  cmd->callback(
+      [o, &pool, &arguments, &exit_code] { exit_code = runReconstruct(*o, pool, arguments); });
 }
 
 }  // namespace sonarcarve::cli

@@ -1,11 +1,14 @@
 // `sonarcarve-cli simulate`: a simulated mission with ground truth.
+#include <cmath>
 #include <iostream>
+#include <sstream>
 
 #include "cli/commands.h"
 #include "cli/nav_error_flags.h"
 #include "cli/terminal_progress.h"
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "geometry/scene_io.h"
 #include "io/output_folder.h"
 #include "sim/demo_scenes.h"
@@ -49,8 +52,24 @@ NoiseSpec noiseFrom(const std::string& choice, std::uint64_t seed) {
   return spec;
 }
 
+// The rays of one frame, checked before the simulator allocates or traces them.
+void requireBoundedRays(const SimulateOptions& o, const SonarModel& sonar) {
+  const double elevation_steps =
+      std::ceil(sonar.verticalAperture() / degToRad(o.elevation_step_deg));
+  const double rays = elevation_steps * o.rays_per_beam * sonar.cols();
+  if (rays > kMaxSimRaysPerFrame) {
+    std::ostringstream text;
+    text << sonar.cols() << " beams x " << o.rays_per_beam << " rays per beam x " << elevation_steps
+         << " elevation steps of " << o.elevation_step_deg << " degrees make " << rays
+         << " rays per frame: expected at most " << kMaxSimRaysPerFrame
+         << "; use a larger --elevation-step or fewer --rays-per-beam";
+    throw Error("--rays-per-beam", "", text.str());
+  }
+}
+
 int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   const std::filesystem::path out(o.out);
+  requireBoundedRays(o, paperSonar());
   if (std::filesystem::exists(out / "mission.yaml") && !o.force) {
     throw Error(out.string(), "", "already holds a mission; choose another --out or add --force");
   }
@@ -103,8 +122,11 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   cmd->add_option("--out", o->out, "Mission folder to write")->required();
   cmd->add_option("--standoff", o->standoff_m, "Distance from the sonar to the structure's axis, m")
       ->capture_default_str();
-  cmd->add_option("--step", o->step_m, "Distance between frames, m")->capture_default_str();
-  cmd->add_option("--max-frames", o->max_frames, "Stop after this many frames");
+  cmd->add_option("--step", o->step_m, "Distance between frames, m")
+      ->check(CLI::Range(kMinSimStep_m, kMaxSimStep_m))
+      ->capture_default_str();
+  cmd->add_option("--max-frames", o->max_frames, "Stop after this many frames")
+      ->check(CLI::Range(0, kMaxSimFrames));
   cmd->add_option("--seed", o->seed, "Seed of the noise and navigation error")
       ->capture_default_str();
   addNavErrorFlags(*cmd, o->nav_error);
@@ -112,6 +134,7 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->check(CLI::Range(0.01, 90.0))
       ->capture_default_str();
   cmd->add_option("--rays-per-beam", o->rays_per_beam, "Rays across each beam")
+      ->check(CLI::Range(1, kMaxRaysPerBeam))
       ->capture_default_str();
   cmd->add_option("--beam", o->beam,
                   "clipped: the seed paper's beam, +-aperture/2 only; realistic: sinc^2 in "

@@ -17,4 +17,15 @@ inline constexpr std::int64_t kMaxFramePixels = std::int64_t{1} << 24;
 /// the default voxel size needs about 3 % of this.
 inline constexpr double kMaxMapVoxels = 4.0e9;
 
+/// The simulator's own sizes (`simulate`): the distance between frames, 1 mm to 100 m (a step
+/// of 0 never ended, and 1 mm already gives 1000 frames a metre of track); the frames of one
+/// run (100,000: a day of pings at one a second takes 86,400); the rays across each beam (32:
+/// the image is averaged over them, 2 is the default); and the rays of one frame, beams x rays
+/// per beam x elevation steps (2^24: one frame then takes seconds, not hours).
+inline constexpr double kMinSimStep_m = 0.001;
+inline constexpr double kMaxSimStep_m = 100.0;
+inline constexpr int kMaxSimFrames = 100000;
+inline constexpr int kMaxRaysPerBeam = 32;
+inline constexpr double kMaxSimRaysPerFrame = 16777216.0;
+
 }  // namespace sonarcarve

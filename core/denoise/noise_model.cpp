@@ -116,6 +116,26 @@ void NoiseModel::save(const std::filesystem::path& path) const {
   writeFileAtomically(path, fs.releaseAndGetString());
 }
 
+namespace {
+
+// What OpenCV says went wrong, without its version, source file and error code.
+std::string openCvReason(const cv::Exception& e) {
+  std::string text = e.what();
+  const auto code = text.find("error: (");
+  if (code != std::string::npos) {
+    const auto end = text.find(") ", code);
+    if (end != std::string::npos) {
+      text = text.substr(end + 2);
+    }
+  }
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) {
+    text.pop_back();
+  }
+  return text;
+}
+
+}  // namespace
+
 NoiseModel NoiseModel::load(const std::filesystem::path& path) {
   const std::string file = path.string();
   requireRegularFile(path, "a noise model (sonarcarve-cli noise-model)");
@@ -160,7 +180,16 @@ NoiseModel NoiseModel::load(const std::filesystem::path& path) {
       throw Error(file, "bearings_rad", "expected one bearing per column");
     }
   } catch (const cv::Exception& e) {
-    throw Error(file, "", std::string("corrupt noise model: ") + e.what());
+    throw Error(file, "",
+                "corrupt noise model (expected the YAML that sonarcarve-cli noise-model "
+                "writes): " +
+                    openCvReason(e));
+  } catch (const std::exception& e) {
+    // OpenCV's reader throws standard exceptions too (std::length_error on a huge count).
+    throw Error(file, "",
+                std::string("corrupt noise model (expected the YAML that sonarcarve-cli "
+                            "noise-model writes): ") +
+                    e.what());
   }
   return model;
 }

@@ -14,6 +14,7 @@
 #include "io/input_file.h"
 #include "io/obj_mesh.h"
 #include "io/point_cloud_ply.h"
+#include "io/stl_check.h"
 
 namespace sonarcarve {
 namespace {
@@ -55,6 +56,7 @@ namespace {
 // checked after).
 vtkSmartPointer<vtkPolyData> readStl(const std::filesystem::path& path) {
   const std::string file = path.string();
+  checkStlFile(path);
   auto reader = vtkSmartPointer<vtkSTLReader>::New();
   reader->SetFileName(file.c_str());
   VtkErrorCatcher errors(reader);

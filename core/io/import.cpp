@@ -126,6 +126,9 @@ ImportReport importOculusToMission(const ImportRequest& request, Progress& progr
   report.notes = log.notes();
   report.problems = log.problems();
   report.warnings = plan.warnings;
+  if (!log.skippedSummary().empty()) {
+    report.warnings.push_back(log.skippedSummary());
+  }
 
   // Everything that can fail on the user's input is read before the first file is written.
   const Mounting mounting =

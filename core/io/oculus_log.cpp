@@ -15,6 +15,7 @@
 
 #include "common/error.h"
 #include "io/input_file.h"
+#include "io/oculus_resync.h"
 
 namespace sonarcarve {
 
@@ -132,6 +133,53 @@ std::shared_ptr<OculusLog::Storage> mapFile(const std::filesystem::path& path) {
   return storage;
 }
 
+// True if the message at `offset` is kept with the size it claims although that size does not
+// lead to another message: no confirmed message starts inside it and, for a ping, it decodes.
+bool keepsItsSize(std::span<const std::uint8_t> bytes, std::size_t offset, std::size_t next) {
+  if (!oculusHeaderFitsAt(bytes, offset)) {
+    return false;
+  }
+  const OculusMessageHeader header = readOculusHeader(bytes, offset, std::string());
+  if (next != kNoOculusMessage && next < offset + header.size()) {
+    return false;  // a confirmed message starts inside: the size field is corrupt
+  }
+  return header.msg_id != kOculusSimplePingResult || oculusPingDecodesAt(bytes, offset);
+}
+
+// What is wrong with the bytes at `offset` that are skipped up to `next`.
+Error corruptionAt(std::span<const std::uint8_t> bytes, std::size_t offset, std::size_t next,
+                   const std::string& source) {
+  if (!oculusIdAt(bytes, offset)) {
+    const std::size_t stop = next != kNoOculusMessage ? next : bytes.size();
+    return Error(source, bytePlace(offset),
+                 std::to_string(stop - offset) +
+                     " bytes that are not an Oculus message (no oculusId 0x4f53)");
+  }
+  if (next != kNoOculusMessage && !oculusHeaderFitsAt(bytes, offset) &&
+      bytes.size() - offset >= kOculusHeaderSize) {
+    std::uint32_t payload = 0;
+    std::memcpy(&payload, bytes.data() + offset + 10, sizeof payload);
+    return Error(source, bytePlace(offset + 10),
+                 "payloadSize " + std::to_string(payload) +
+                     " is corrupt: it runs past the end of the data, over the next valid "
+                     "message, at " +
+                     bytePlace(next));
+  }
+  try {
+    const OculusMessageHeader header = readOculusHeader(bytes, offset, source);
+    if (next != kNoOculusMessage && next < offset + header.size()) {
+      return Error(source, bytePlace(offset + 10),
+                   "payloadSize " + std::to_string(header.payload_size) +
+                       " is corrupt: it runs over the next valid message, at " + bytePlace(next));
+    }
+    decodeOculusPing(bytes, offset, source, false);
+    return Error(source, bytePlace(offset + header.size()),
+                 "expected an Oculus message after the one at " + bytePlace(offset));
+  } catch (const Error& e) {
+    return e;
+  }
+}
+
 }  // namespace
 
 void OculusLog::addProblem(const Error& error, const std::string& consequence) {
@@ -209,32 +257,16 @@ void OculusLog::indexMessages(std::span<const std::uint8_t> all, std::size_t beg
   double last_raw_time = -1.0;
   std::size_t offset = begin;
   while (offset < end) {
-    if (!oculusIdAt(bytes, offset)) {
-      // Garbage between messages: look for the next header whose payload fits.
-      std::size_t next = offset + 1;
-      while (next + kOculusHeaderSize <= end &&
-             !(oculusIdAt(bytes, next) &&
-               read<std::uint32_t>(bytes, next + 10) <= end - next - kOculusHeaderSize)) {
-        ++next;
+    if (!oculusSizeLeadsToAMessage(bytes, offset)) {
+      // A corrupt header, garbage, or a message followed by garbage: the size is trusted only
+      // if no confirmed message starts inside the span it claims.
+      const std::size_t next = findNextOculusMessage(bytes, offset + 1);
+      if (!keepsItsSize(bytes, offset, next)) {
+        offset = skipCorruptBytes(bytes, offset, next, source);
+        continue;
       }
-      const bool found = next + kOculusHeaderSize <= end;
-      addProblem(Error(source, bytePlace(offset),
-                       std::to_string((found ? next : end) - offset) +
-                           " bytes that are not an Oculus message (no oculusId 0x4f53)"),
-                 found ? "skipped to the next message" : "skipped up to the end");
-      if (!found) {
-        break;
-      }
-      offset = next;
-      continue;
     }
-    OculusMessageHeader header;
-    try {
-      header = readOculusHeader(bytes, offset, source);
-    } catch (const Error& e) {
-      addProblem(e, "the last message is cut off");
-      break;
-    }
+    const OculusMessageHeader header = readOculusHeader(bytes, offset, source);
     if (header.msg_id != kOculusSimplePingResult) {
       ++skipped["message id " + std::to_string(header.msg_id) + " (" + messageName(header.msg_id) +
                 ")"];
@@ -256,6 +288,8 @@ void OculusLog::indexMessages(std::span<const std::uint8_t> all, std::size_t beg
         pings_.push_back(std::move(entry));
       } catch (const Error& e) {
         addProblem(e, "message at " + bytePlace(offset) + " skipped");
+        skipped_.bytes += header.size();
+        ++skipped_.messages;
       }
     }
     offset += header.size();
@@ -263,6 +297,25 @@ void OculusLog::indexMessages(std::span<const std::uint8_t> all, std::size_t beg
   for (const auto& [what, count] : skipped) {
     notes_.push_back(source + ": " + std::to_string(count) + " x " + what + " skipped");
   }
+}
+
+std::size_t OculusLog::skipCorruptBytes(std::span<const std::uint8_t> bytes, std::size_t offset,
+                                        std::size_t next, const std::string& source) {
+  const bool found = next != kNoOculusMessage;
+  const std::size_t stop = found ? next : bytes.size();
+  const std::size_t count = stop - offset;
+  const bool message = oculusIdAt(bytes, offset);
+  skipped_.bytes += count;
+  skipped_.messages += message ? 1 : 0;
+  skipped_.resyncs += found ? 1 : 0;
+  const std::string skipped = std::to_string(count) + " bytes" + (message ? " (1 message)" : "");
+  const std::string consequence =
+      found ? "skipped " + skipped + ", resynchronised on the next valid message at " +
+                  bytePlace(next)
+      : message ? "the last message is cut off: skipped " + skipped + " up to the end"
+                : "skipped " + skipped + " up to the end";
+  addProblem(corruptionAt(bytes, offset, next, source), consequence);
+  return stop;
 }
 
 void OculusLog::indexRecording() {
@@ -310,6 +363,8 @@ void OculusLog::indexRecording() {
         ++next;
       }
       const bool found = next + kItemHeaderSize <= bytes.size();
+      skipped_.bytes += (found ? next : bytes.size()) - offset;
+      skipped_.resyncs += found ? 1 : 0;
       addProblem(Error(source_, bytePlace(offset),
                        "expected a recording item (0xaabbccdd with a header size of 40)"),
                  found ? "skipped " + std::to_string(next - offset) + " bytes to the next item"
@@ -395,6 +450,15 @@ std::vector<std::uint8_t> OculusLog::inflateItem(std::size_t item) const {
                 "corrupt compressed item (zlib error " + std::to_string(rc) + ")");
   }
   return out;
+}
+
+std::string OculusLog::skippedSummary() const {
+  if (skipped_.bytes == 0) {
+    return "";
+  }
+  return source_ + ": skipped " + std::to_string(skipped_.bytes) + " corrupt bytes (" +
+         std::to_string(skipped_.messages) + " messages), resynchronised " +
+         std::to_string(skipped_.resyncs) + " times on the next valid message";
 }
 
 OculusPing OculusLog::decode(std::size_t index) const {

@@ -10,9 +10,11 @@
 // Opening a log indexes it: every message is checked (headers, sizes, bearing tables) but
 // images are converted only by decode(). The file is memory-mapped, so a log of any size is
 // opened without reading it into memory. A message that is corrupt is reported in problems()
-// and skipped, the rest kept; messages other than pings (status, user config, ...) are listed
-// in notes() and skipped; a truncated last message is reported. A file with no usable ping
-// throws an Error naming the file and the byte offset.
+// and skipped, the rest kept; after a corrupt header (a flipped bit in a size field, garbage)
+// the reader scans forward to the next valid message (io/oculus_resync.h) and counts the
+// bytes and messages it skipped (skipped()); messages other than pings (status, user config, ...)
+// are listed in notes() and skipped; a truncated last message is reported. A file with no usable
+// ping throws an Error naming the file and the byte offset.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +36,15 @@ struct OculusLogEntry {
   int item = -1;        ///< compressed recording item that holds it, or -1
 };
 
+/// What the reader skipped as corrupt: bytes, messages among them (a corrupt header, a
+/// message that does not decode, a cut-off last message) and how often it had to scan
+/// forward for the next valid message.
+struct OculusSkipped {
+  std::size_t bytes = 0;
+  std::size_t messages = 0;
+  std::size_t resyncs = 0;
+};
+
 class OculusLog {
  public:
   /// Maps and indexes `path`. Throws Error (file, byte, what was expected) on an empty,
@@ -52,6 +63,10 @@ class OculusLog {
   const std::vector<std::string>& notes() const { return notes_; }
   /// Corrupt or truncated data that was skipped, one line each with its byte offset.
   const std::vector<std::string>& problems() const { return problems_; }
+  /// The totals of problems(); all zero for an intact log.
+  const OculusSkipped& skipped() const { return skipped_; }
+  /// skipped() in words for `info` and warnings ("" if nothing was skipped).
+  std::string skippedSummary() const;
 
   /// Ping `index` with its image. Throws Error if it cannot be decoded.
   OculusPing decode(std::size_t index) const;
@@ -68,6 +83,8 @@ class OculusLog {
   void index();
   void indexMessages(std::span<const std::uint8_t> bytes, std::size_t begin, std::size_t end,
                      const std::string& source, int item, std::optional<double> item_time_s);
+  std::size_t skipCorruptBytes(std::span<const std::uint8_t> bytes, std::size_t offset,
+                               std::size_t next, const std::string& source);
   void indexRecording();
   std::vector<std::uint8_t> inflateItem(std::size_t item) const;
   void addProblem(const Error& error, const std::string& consequence);
@@ -80,6 +97,7 @@ class OculusLog {
   std::vector<CompressedItem> compressed_items_;
   std::vector<std::string> notes_;
   std::vector<std::string> problems_;
+  OculusSkipped skipped_;
   std::optional<Error> first_problem_;
 };
 

@@ -51,6 +51,9 @@ Mission openOculusLog(const std::filesystem::path& path, const OpenOptions& opti
   for (const std::string& problem : log->problems()) {
     mission.warnings.push_back(problem + " (skipped)");
   }
+  if (!log->skippedSummary().empty()) {
+    mission.warnings.push_back(log->skippedSummary());
+  }
   OpenOptions rest = options;
   rest.time_offset_s = 0.0;
   rest.vertical_aperture_deg.reset();

@@ -65,7 +65,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
                          params_.pose_refinement};
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
-  requireBoundedSizes(bounds, sonar_, params_.carve);
+  requireBoundedSizes(bounds, sonar_, params_.carve, pool_.size());
   NoiseChoice noise;
   try {
     noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);

@@ -1,5 +1,6 @@
 #include "pipeline/size_limits.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -9,8 +10,66 @@
 
 namespace sonarcarve {
 
+namespace {
+
+constexpr double kBlockTableBytes = 9.0;            // state, slot and stamp of a block
+constexpr double kBlockContentBytes = 512.0 * 4.0;  // a Mixed block: 8^3 floats
+constexpr double kSurfaceLayers = 2.0;              // blocks a surface straddles
+constexpr double kOcclusionCellBytes = 8.0;
+constexpr double kMiB = 1024.0 * 1024.0;
+
+double elevationSteps(const SonarModel& sonar, const CarveParams& carve) {
+  return std::ceil(sonar.verticalAperture() / carve.elevation_step_rad);
+}
+
+std::string mib(double bytes) {
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(0);
+  text << std::ceil(bytes / kMiB) << " MiB";
+  return text.str();
+}
+
+}  // namespace
+
+MemoryEstimate estimateMemory(const Eigen::AlignedBox3d& bounds, const SonarModel& sonar,
+                              const CarveParams& carve, unsigned threads) {
+  const Eigen::Vector3d blocks = (bounds.sizes() / (carve.voxel_size_m * 8.0)).array().ceil() + 1.0;
+  const double largest_face =
+      std::max({blocks.x() * blocks.y(), blocks.y() * blocks.z(), blocks.x() * blocks.z()});
+  MemoryEstimate e;
+  e.map = blocks.prod() * kBlockTableBytes + kSurfaceLayers * largest_face * kBlockContentBytes;
+  const double pixels = static_cast<double>(sonar.rows()) * sonar.cols();
+  e.frames = threads * 2.0 * pixels * 4.0;
+  e.occlusion = threads * elevationSteps(sonar, carve) * sonar.cols() * kOcclusionCellBytes;
+  return e;
+}
+
+void requireMemory(const MemoryEstimate& e, const CarveParams& carve,
+                   const std::optional<AvailableMemory>& available) {
+  if (!available || e.total() <= static_cast<double>(available->bytes)) {
+    return;
+  }
+  std::string place = "voxel_size_m";
+  std::string advice = "use a larger voxel size or a smaller region";
+  if (e.occlusion > e.map && e.occlusion > e.frames) {
+    place = "elevation_step_deg";
+    advice = "use a larger elevation step";
+  } else if (e.frames > e.map) {
+    place = "frames";
+    advice = "the sonar's frames (beams x range bins) are too large for this machine";
+  }
+  std::ostringstream text;
+  text << "the reconstruction needs at least " << mib(e.total()) << " (map " << mib(e.map)
+       << " at a voxel size of " << carve.voxel_size_m << " m, frames " << mib(e.frames)
+       << ", occlusion buffers " << mib(e.occlusion) << " at an elevation step of "
+       << radToDeg(carve.elevation_step_rad) << " degrees) but " << mib(available->bytes)
+       << " are available (" << available->source << "): " << advice;
+  throw Error("parameters", place, text.str());
+}
+
 void requireBoundedSizes(const Eigen::AlignedBox3d& bounds, const SonarModel& sonar,
-                         const CarveParams& carve) {
+                         const CarveParams& carve, unsigned threads) {
   const Eigen::Vector3d extent_m = bounds.sizes();
   const Eigen::Vector3d per_axis = (extent_m / carve.voxel_size_m).array().ceil() + 1.0;
   const double voxels = per_axis.prod();
@@ -22,8 +81,7 @@ void requireBoundedSizes(const Eigen::AlignedBox3d& bounds, const SonarModel& so
          << kMaxMapVoxels << "; use a larger voxel size or a smaller region";
     throw Error("parameters", "voxel_size_m", text.str());
   }
-  const double elevation_steps = std::ceil(sonar.verticalAperture() / carve.elevation_step_rad);
-  const double cells = elevation_steps * sonar.cols();
+  const double cells = elevationSteps(sonar, carve) * sonar.cols();
   if (!(cells <= static_cast<double>(kMaxFramePixels))) {
     std::ostringstream text;
     text << "a step of " << radToDeg(carve.elevation_step_rad) << " degrees over the "
@@ -32,6 +90,7 @@ void requireBoundedSizes(const Eigen::AlignedBox3d& bounds, const SonarModel& so
          << kMaxFramePixels << "; use a larger step";
     throw Error("parameters", "elevation_step_deg", text.str());
   }
+  requireMemory(estimateMemory(bounds, sonar, carve, threads), carve, availableMemory());
 }
 
 }  // namespace sonarcarve

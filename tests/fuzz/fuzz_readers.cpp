@@ -8,12 +8,15 @@
 #include <string_view>
 
 #include "common/error.h"
+#include "denoise/noise_model.h"
+#include "geometry/scene_io.h"
 #include "io/frame_png.h"
 #include "io/mission.h"
 #include "io/nav_import.h"
 #include "io/oculus_log.h"
 #include "io/ply_check.h"
 #include "io/point_cloud_ply.h"
+#include "pipeline/reconstruction_params.h"
 
 namespace sonarcarve::fuzz {
 namespace {
@@ -120,12 +123,31 @@ void navImport(std::span<const std::uint8_t> bytes) {
   acceptingErrors([&] { importNavCsvText(files[1], "fuzz-nav.csv", NavMapping{}); });
 }
 
+void paramsYaml(std::span<const std::uint8_t> bytes) {
+  acceptingErrors([&] {
+    ReconstructionParams::fromYamlText(std::string(text(bytes)), "fuzz-params.yaml").validate();
+  });
+}
+
+void noiseModel(std::span<const std::uint8_t> bytes) {
+  const auto path = scratch() / "noise.yaml";
+  write(path, text(bytes));
+  acceptingErrors([&] { NoiseModel::load(path); });
+}
+
+void referenceMesh(std::span<const std::uint8_t> bytes) {
+  for (const char* name : {"mesh.stl", "mesh.obj", "mesh.ply"}) {
+    const auto path = scratch() / name;
+    write(path, text(bytes));
+    acceptingErrors([&] { loadSceneMesh(path); });
+  }
+}
+
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {{"oculus", oculusLog},
-                                          {"mission", mission},
-                                          {"frame_png", framePng},
-                                          {"ply", plyPointCloud},
-                                          {"nav_import", navImport}};
+  static const std::vector<Target> all = {{"oculus", oculusLog},       {"mission", mission},
+                                          {"frame_png", framePng},     {"ply", plyPointCloud},
+                                          {"nav_import", navImport},   {"params_yaml", paramsYaml},
+                                          {"noise_model", noiseModel}, {"mesh", referenceMesh}};
   return all;
 }
 

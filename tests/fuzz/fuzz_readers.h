@@ -26,6 +26,13 @@ void plyPointCloud(std::span<const std::uint8_t> bytes);
 /// Navigation import: a mapping YAML and a CSV separated by a NUL byte.
 void navImport(std::span<const std::uint8_t> bytes);
 
+/// Reconstruction parameters: ReconstructionParams::fromYamlText, then validate().
+void paramsYaml(std::span<const std::uint8_t> bytes);
+/// A noise model file (OpenCV FileStorage YAML): NoiseModel::load.
+void noiseModel(std::span<const std::uint8_t> bytes);
+/// A reference or scene mesh: loadSceneMesh on the same bytes as an STL, an OBJ and a PLY.
+void referenceMesh(std::span<const std::uint8_t> bytes);
+
 struct Target {
   std::string name;  ///< also the folder of its corpus: tests/fuzz/corpus/<name>
   Reader reader;

@@ -76,6 +76,43 @@ def ply_binary():
     return header + body
 
 
+def stl_binary():
+    tri = struct.pack("<12fH", 0, 0, 1, 2, 0, 10, 2.1, 0, 10, 2, 0.1, 10, 0)
+    return b"solid-less binary".ljust(80, b" ") + struct.pack("<I", 2) + tri + tri
+
+
+NOISE_MODEL = """%YAML:1.0
+---
+format: sonarcarve-noise-model
+version: 1
+frames: 3
+smoothing: 1
+range_min_m: 1.
+range_resolution_m: 0.025
+vertical_aperture_rad: 0.349
+bearings_rad: !!opencv-matrix
+   rows: 1
+   cols: 2
+   dt: d
+   data: [ -0.1, 0.1 ]
+mean: !!opencv-matrix
+   rows: 2
+   cols: 2
+   dt: f
+   data: [ 1., 2., 3., 4. ]
+stddev: !!opencv-matrix
+   rows: 2
+   cols: 2
+   dt: f
+   data: [ 0.5, 0.5, 0.5, 0.5 ]
+rayleigh_sigma: !!opencv-matrix
+   rows: 2
+   cols: 2
+   dt: f
+   data: [ 1., 1., 1., 1. ]
+"""
+
+
 def main():
     write("oculus", "v0_8bit", oculus_ping(0, 16, 10))
     write("oculus", "v2_16bit_gain", oculus_ping(2, 8, 4, sixteen=True, gain=True))
@@ -102,6 +139,20 @@ def main():
           "header: false\ncolumns: {time: 0, north: 2, east: 1, up: 3, yaw: 4}\n"
           "units: {angles: rad}\nconventions: {heading: enu, pitch: bow_down, roll: port_down}\n\0"
           "0,1,2,-3,0.5\n1,1,2,-3,0.6\n")
+
+    write("params_yaml", "some_keys",
+          "voxel_size_m: 0.05\nelevation_step_deg: 0.5\nengine: fast\nregion: [0, 0, 0, 1, 1, 1]\n")
+    write("params_yaml", "nested", "carve:\n  voxel_size_m: 0.1\nmesh: false\nframes: {first: 2}\n")
+    write("noise_model", "two_by_two.yaml", NOISE_MODEL)
+    write("mesh", "ascii.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 2 0 10\n"
+          "vertex 2.1 0 10\nvertex 2 0.1 10\nendloop\nendfacet\nendsolid t\n")
+    write("mesh", "binary.stl", stl_binary())
+    write("mesh", "tetrahedron.obj", "# a tetrahedron\nv 2 0 10\nv 2.1 0 10\nv 2 0.1 10\n"
+          "v 2 0 10.1\nvn 0 0 1\nf 1 2 3\nf 1//1 2//1 4//1\nf 1/1 3/1 4/1\nf 2 3 4\n")
+    write("mesh", "faces.ply",
+          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+          "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+          "end_header\n2 0 10\n2.1 0 10\n2 0.1 10\n3 0 1 2\n")
 
 
 if __name__ == "__main__":

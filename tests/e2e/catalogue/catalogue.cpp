@@ -72,6 +72,14 @@ void runCatalogueCase(const CatalogueCase& c) {
   for (const std::string& relative : c.intact) {
     EXPECT_EQ(readText(ws / relative), kPreviousContent) << relative << " changed by " << context;
   }
+  for (const auto& [relative, fragment] : c.holds) {
+    std::error_code ec;
+    EXPECT_TRUE(std::filesystem::is_regular_file(ws / relative, ec)) << relative << ": " << context;
+    if (std::filesystem::is_regular_file(ws / relative, ec)) {
+      EXPECT_NE(readText(ws / relative).find(fragment), std::string::npos)
+          << "'" << fragment << "' not in " << relative << " after " << context;
+    }
+  }
   EXPECT_EQ(temporaryFilesUnder(ws.root()), std::vector<std::string>{}) << context;
   rusage usage{};
   getrusage(RUSAGE_CHILDREN, &usage);

@@ -9,6 +9,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/test_support.h"
@@ -44,6 +45,8 @@ struct CatalogueCase {
   int file_size_limit_kib = 0;
   /// A command run around sonarcarve-cli, in the workspace: "flock -o out/.sonarcarve-lock".
   std::string wrapper = "";
+  /// Files under the workspace that must exist and hold a fragment: (path, fragment).
+  std::vector<std::pair<std::string, std::string>> holds = {};
 };
 
 /// GoogleTest prints a failing case's parameter: its name, not its bytes.
@@ -58,6 +61,8 @@ std::vector<CatalogueCase> fileKindCases();
 std::vector<CatalogueCase> contentCases();
 std::vector<CatalogueCase> limitCases();
 std::vector<CatalogueCase> outputCases();
+std::vector<CatalogueCase> oculusCases();
+std::vector<CatalogueCase> readerCases();
 
 // Inputs for the cases.
 inline constexpr const char* kPreviousContent = "a file of an earlier run\n";

@@ -19,6 +19,8 @@ INSTANTIATE_TEST_SUITE_P(NotAFile, Catalogue, ::testing::ValuesIn(fileKindCases(
 INSTANTIATE_TEST_SUITE_P(Content, Catalogue, ::testing::ValuesIn(contentCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Limits, Catalogue, ::testing::ValuesIn(limitCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Outputs, Catalogue, ::testing::ValuesIn(outputCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Oculus, Catalogue, ::testing::ValuesIn(oculusCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Readers, Catalogue, ::testing::ValuesIn(readerCases()), nameOf);
 
 }  // namespace
 }  // namespace sonarcarve::test

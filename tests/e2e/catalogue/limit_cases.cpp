@@ -28,6 +28,16 @@ CatalogueCase hugeFrame(const std::string& name, std::uint32_t width, std::uint3
           .absent = {"polar.png"}};
 }
 
+CatalogueCase simulateSize(const std::string& name, const std::string& flags,
+                           const std::vector<std::string>& message) {
+  return {
+      .name = name,
+      .prepare =
+          [flags](const Workspace&) { return "simulate --scene riser " + flags + " --out sim"; },
+      .message = message,
+      .absent = {"sim"}};
+}
+
 std::string tableOf(int beams) {
   std::string table = "{table_deg: [";
   for (int j = 0; j < beams; ++j) {
@@ -111,6 +121,31 @@ std::vector<CatalogueCase> limitCases() {
                    "voxels of 0.0001 m: expected at most",
                    "use a larger voxel size or a smaller region"},
        .absent = {"out/surface_points.ply", "out/report.json"}},
+      // Memory: the estimate of the map, frames and occlusion buffers against the memory
+      // available, here capped by the user.
+      {.name = "ReconstructOverTheMemoryAvailable",
+       .prepare = [](const Workspace&) { return std::string("reconstruct mission --out out"); },
+       .message = {"parameters: voxel_size_m: the reconstruction needs at least",
+                   "but 1 MiB are available (SONARCARVE_MEMORY_LIMIT_MB)",
+                   "use a larger voxel size or a smaller region"},
+       .absent = {"out/surface_points.ply", "out/report.json", "out/manifest.json"},
+       .wrapper = "env SONARCARVE_MEMORY_LIMIT_MB=1"},
+      {.name = "ReconstructUnderAGenerousMemoryLimit",
+       .prepare = [](const Workspace&) { return std::string("reconstruct mission --out out"); },
+       .outcome = Outcome::Succeeds,
+       .message = {"\"frames_used\""},
+       .wrapper = "env SONARCARVE_MEMORY_LIMIT_MB=4096"},
+      simulateSize("SimulateStepZero", "--step 0", {"--step: Value 0 not in range"}),
+      simulateSize("SimulateStepOfAKilometre", "--step 1000", {"--step: Value 1000 not in range"}),
+      simulateSize("SimulateAMillionFrames", "--max-frames 1000000",
+                   {"--max-frames: Value 1000000 not in range"}),
+      simulateSize("SimulateNoRaysPerBeam", "--rays-per-beam 0",
+                   {"--rays-per-beam: Value 0 not in range"}),
+      simulateSize("SimulateAThousandRaysPerBeam", "--rays-per-beam 1000",
+                   {"--rays-per-beam: Value 1000 not in range"}),
+      simulateSize("SimulateTooManyRaysPerFrame", "--elevation-step 0.01 --rays-per-beam 32",
+                   {"--rays-per-beam: ", "rays per frame: expected at most 1.67772e+07",
+                    "use a larger --elevation-step or fewer --rays-per-beam"}),
   };
 }
 

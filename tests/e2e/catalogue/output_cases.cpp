@@ -170,6 +170,8 @@ std::vector<CatalogueCase> outputCases() {
        .message = {"fan.png: byte", "write failed: File too large"},
        .intact = {"fan.png"},
        .file_size_limit_kib = 2},
+      // The earlier run's report goes with it: a failed run leaves its own files only, and a
+      // manifest that says it failed.
       {.name = "ReconstructOnAFullDisk",
        .prepare =
            [](const Workspace& ws) {
@@ -177,8 +179,29 @@ std::vector<CatalogueCase> outputCases() {
              return std::string("reconstruct mission --out out");
            },
        .message = {"out/", "write failed: File too large"},
-       .intact = {"out/report.json"},
-       .file_size_limit_kib = 1},
+       .absent = {"out/report.json"},
+       .file_size_limit_kib = 1,
+       .holds = {{"out/manifest.json", "\"status\": \"failed\""},
+                 {"out/manifest.json", "write failed: File too large"}}},
+      {.name = "ReconstructWritesAManifest",
+       .prepare = [](const Workspace&) { return std::string("reconstruct mission --out out"); },
+       .outcome = Outcome::Succeeds,
+       .holds = {{"out/manifest.json", "\"status\": \"complete\""},
+                 {"out/manifest.json", "\"name\": \"report.json\""},
+                 {"out/manifest.json", "\"reconstruct\""}}},
+      {.name = "ReconstructRemovesTheFilesOfAnEarlierManifestOnly",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "out/old_points.ply");
+             writePrevious(ws / "out/notes.txt");
+             writeBytes(ws / "out/manifest.json",
+                        R"({"status": "complete", "files": [{"name": "old_points.ply"}]})");
+             return std::string("reconstruct mission --out out");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"removed out/old_points.ply of an earlier run"},
+       .absent = {"out/old_points.ply"},
+       .intact = {"out/notes.txt"}},
       {.name = "SimulateOnAFullDisk",
        .prepare =
            [](const Workspace&) {
