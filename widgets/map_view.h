@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/camera_state.h"
 #include "mesh/surface_mesher.h"
 #include "sonar/sonar_model.h"
 
@@ -33,15 +34,8 @@ struct MapViewBlock {
   std::vector<float> errors_m;          ///< distance to the ground truth, or empty
 };
 
-/// Where the camera is, to save and restore a view (world NED, metres).
-struct CameraState {
-  Eigen::Vector3d position{0, 0, 0};
-  Eigen::Vector3d focal_point{0, 0, 0};
-  Eigen::Vector3d view_up{0, 0, -1};
-  bool parallel = false;
-  double parallel_scale = 1.0;
-  double view_angle_deg = 30.0;
-};
+/// Where the camera is, to save and restore a view (io/camera_state.h).
+using CameraState = sonarcarve::CameraState;
 
 class MapView : public QWidget {
   Q_OBJECT

@@ -36,11 +36,11 @@
 #include "io/atomic_file.h"
 #include "io/frame_source.h"
 #include "io/oculus_log.h"
+#include "io/session_file.h"
 #include "map_view.h"
 #include "mesh/mesh_export.h"
 #include "occlusion/surface_points.h"
 #include "params_panel.h"
-#include "session.h"
 #include "track_view.h"
 
 namespace sonarcarve::gui {
@@ -662,7 +662,7 @@ Session MainWindow::currentSession() const {
 
 bool MainWindow::saveSession(const QString& file) {
   try {
-    gui::saveSession(currentSession(), file.toStdString());
+    sonarcarve::saveSession(currentSession(), file.toStdString());
   } catch (const std::exception& e) {
     showError(tr("Cannot save the session"), describe(e));
     return false;
@@ -674,7 +674,7 @@ bool MainWindow::saveSession(const QString& file) {
 bool MainWindow::openSession(const QString& file) {
   Session s;
   try {
-    s = loadSession(file.toStdString());
+    s = sonarcarve::loadSession(file.toStdString());
   } catch (const std::exception& e) {
     showError(tr("Cannot open the session"), describe(e));
     return false;

@@ -39,9 +39,11 @@ class ParamsPanel;
 class TrackView;
 }  // namespace sonarcarve::widgets
 
-namespace sonarcarve::gui {
-
+namespace sonarcarve {
 struct Session;
+}
+
+namespace sonarcarve::gui {
 
 class MainWindow : public QMainWindow {
   Q_OBJECT

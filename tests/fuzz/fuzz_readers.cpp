@@ -16,6 +16,7 @@
 #include "io/oculus_log.h"
 #include "io/ply_check.h"
 #include "io/point_cloud_ply.h"
+#include "io/session_file.h"
 #include "pipeline/reconstruction_params.h"
 
 namespace sonarcarve::fuzz {
@@ -135,6 +136,12 @@ void noiseModel(std::span<const std::uint8_t> bytes) {
   acceptingErrors([&] { NoiseModel::load(path); });
 }
 
+void sessionFile(std::span<const std::uint8_t> bytes) {
+  const auto path = scratch() / "session.sonarcarve";
+  write(path, text(bytes));
+  acceptingErrors([&] { loadSession(path); });
+}
+
 void referenceMesh(std::span<const std::uint8_t> bytes) {
   for (const char* name : {"mesh.stl", "mesh.obj", "mesh.ply"}) {
     const auto path = scratch() / name;
@@ -144,10 +151,10 @@ void referenceMesh(std::span<const std::uint8_t> bytes) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {{"oculus", oculusLog},       {"mission", mission},
-                                          {"frame_png", framePng},     {"ply", plyPointCloud},
-                                          {"nav_import", navImport},   {"params_yaml", paramsYaml},
-                                          {"noise_model", noiseModel}, {"mesh", referenceMesh}};
+  static const std::vector<Target> all = {
+      {"oculus", oculusLog},       {"mission", mission},      {"frame_png", framePng},
+      {"ply", plyPointCloud},      {"nav_import", navImport}, {"params_yaml", paramsYaml},
+      {"noise_model", noiseModel}, {"mesh", referenceMesh},   {"session", sessionFile}};
   return all;
 }
 

@@ -153,6 +153,14 @@ def main():
           "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
           "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
           "end_header\n2 0 10\n2.1 0 10\n2 0.1 10\n3 0 1 2\n")
+    write("session", "full.sonarcarve",
+          "# SonarCarve GUI session\nformat: sonarcarve-session\nversion: 1\n"
+          "mission: /data/mission\nframe: 12\ncolour_by: depth\n"
+          "camera: {position: [1, 2, 3], focal_point: [0, 0, 10], view_up: [0, 0, -1], "
+          "parallel: true, parallel_scale: 2.5, view_angle_deg: 30}\n"
+          "params: {voxel_size_m: 0.05, engine: fast, detector: {mode: cfar}}\n")
+    write("session", "minimal.sonarcarve",
+          "format: sonarcarve-session\nversion: 1\nmission: m\n")
 
 
 if __name__ == "__main__":

@@ -7,14 +7,15 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QtTest>
+#include <functional>
 #include <set>
 
 #include "io/point_cloud_ply.h"
+#include "io/session_file.h"
 #include "main_window.h"
 #include "map_view.h"
 #include "params_panel.h"
 #include "pipeline/reconstruction.h"
-#include "session.h"
 #include "sim/demo_scenes.h"
 #include "sim/simulation_run.h"
 #include "support/cli_runner.h"
@@ -199,6 +200,73 @@ class WorkbenchTest : public QObject {
              qPrintable(window.logText()));
     QVERIFY(waitForResult(window, 120000));
     QVERIFY(window.isVisible());
+  }
+
+  // More of the catalogue's inputs (docs/reliability.md), as the workbench meets them: each
+  // open fails with a dialog that names the file and what was expected, and the window stays.
+  void catalogueInputsGiveADialogNamingTheFile() {
+    MainWindow window;
+    window.show();
+    struct Case {
+      std::string name;
+      std::function<void(const fs::path&)> spoil;  // applied to a copy of the example mission
+      bool session = false;                        // open <copy>/s.sonarcarve instead
+      QStringList fragments;
+    };
+    const auto replace = [](const fs::path& file, const std::string& from, const std::string& to) {
+      std::string text = sonarcarve::test::readText(file);
+      text.replace(text.find(from), from.size(), to);
+      sonarcarve::test::writeText(file, text);
+    };
+    const std::vector<Case> cases = {
+        {"nan-nav",
+         [&](const fs::path& m) { replace(m / "nav.csv", "99.75,0,0", "99.75,nan,0"); },
+         false,
+         {"nav.csv", "line 2"}},
+        {"frame-outside",
+         [&](const fs::path& m) {
+           replace(m / "frames.csv", "frames/000000.png", "../000000.png");
+         },
+         false,
+         {"frames.csv", "outside"}},
+        {"empty-yaml",
+         [](const fs::path& m) { sonarcarve::test::writeText(m / "mission.yaml", ""); },
+         false,
+         {"mission.yaml"}},
+        {"binary-session",
+         [](const fs::path& m) {
+           sonarcarve::test::writeText(m / "s.sonarcarve",
+                                       std::string("\x89PNG\r\n\x1a\n\0\0", 10));
+         },
+         true,
+         {"s.sonarcarve"}},
+        {"session-bad-params",
+         [](const fs::path& m) {
+           sonarcarve::test::writeText(m / "s.sonarcarve",
+                                       "format: sonarcarve-session\nversion: 1\nmission: " +
+                                           m.string() + "\nparams: {voxel_size_m: -1}\n");
+         },
+         true,
+         {"s.sonarcarve", "voxel_size_m"}},
+    };
+    for (const Case& c : cases) {
+      const fs::path m = sonarcarve::test::copyExampleMission(scratch_->path(), c.name);
+      c.spoil(m);
+      const QString target = QString::fromStdString((c.session ? m / "s.sonarcarve" : m).string());
+      QVERIFY2(!(c.session ? window.openSession(target) : window.openMission(target)),
+               c.name.c_str());
+      QMessageBox* box = nullptr;  // the one shown now (an accepted one is deleted later)
+      for (auto* b : window.findChildren<QMessageBox*>("errorMessage")) {
+        box = b->isVisible() ? b : box;
+      }
+      QVERIFY2(box != nullptr, c.name.c_str());
+      for (const QString& f : c.fragments) {
+        QVERIFY2(box->text().contains(f), qPrintable(QString::fromStdString(c.name) + ": '" + f +
+                                                     "' not in: " + box->text()));
+      }
+      box->accept();
+      QVERIFY(window.isVisible());
+    }
   }
 
   void sessionRestoresMissionParametersAndCamera() {

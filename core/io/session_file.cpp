@@ -1,4 +1,4 @@
-#include "session.h"
+#include "io/session_file.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -6,7 +6,7 @@
 #include "io/atomic_file.h"
 #include "io/yaml_fields.h"
 
-namespace sonarcarve::gui {
+namespace sonarcarve {
 namespace {
 
 constexpr const char* kFormat = "sonarcarve-session";
@@ -62,7 +62,11 @@ Session loadSession(const std::filesystem::path& file) {
   Session s;
   s.mission = f.text(f.child(root, "", "mission"), "mission");
   if (root["frame"]) {
-    s.frame = static_cast<int>(f.number(root["frame"], "frame"));
+    const double frame = f.number(root["frame"], "frame");
+    if (!(frame >= 0.0 && frame <= 1e9)) {
+      f.fail(root["frame"], "frame", "expected a frame index from 0 to 1e9");
+    }
+    s.frame = static_cast<int>(frame);
   }
   if (root["colour_by"]) {
     s.colour_by = f.text(root["colour_by"], "colour_by");
@@ -83,4 +87,4 @@ Session loadSession(const std::filesystem::path& file) {
   return s;
 }
 
-}  // namespace sonarcarve::gui
+}  // namespace sonarcarve

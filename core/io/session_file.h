@@ -1,5 +1,5 @@
-// A GUI session saved to a YAML file: the mission, the reconstruction parameters (the same keys
-// as a params YAML, embedded), the camera, the frame shown and the colouring. Qt-free.
+// A workbench session saved to a YAML file: the mission, the reconstruction parameters (the same
+// keys as a params YAML, embedded), the camera, the frame shown and the colouring. Qt-free.
 //   format: sonarcarve-session
 //   version: 1
 //   mission: /path/to/mission
@@ -13,15 +13,15 @@
 #include <filesystem>
 #include <string>
 
-#include "map_view.h"
+#include "io/camera_state.h"
 #include "pipeline/reconstruction_params.h"
 
-namespace sonarcarve::gui {
+namespace sonarcarve {
 
 struct Session {
   std::string mission;
   ReconstructionParams params;
-  widgets::CameraState camera;
+  CameraState camera;
   int frame = 0;
   std::string colour_by = "intensity";
 };
@@ -31,4 +31,4 @@ void saveSession(const Session& session, const std::filesystem::path& file);
 /// Throws Error naming the file, line and key on a missing or bad value.
 Session loadSession(const std::filesystem::path& file);
 
-}  // namespace sonarcarve::gui
+}  // namespace sonarcarve
