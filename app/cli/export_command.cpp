@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
+#include "io/run_manifest.h"
 #include "mesh/mesh_export.h"
 
 namespace sonarcarve::cli {
@@ -39,6 +40,18 @@ void addExportCommand(CLI::App& app, int& exit_code) {
                                                Eigen::Vector3d(o->crop[3], o->crop[4], o->crop[5]));
     }
     const std::filesystem::path folder(o->reconstruction);
+    // A run that failed or never ended has left files of its own and none of an earlier run
+    // (io/run_manifest.h): exporting them would pass a partial result for a deliverable.
+    const std::optional<std::string> status = manifestStatus(folder);
+    if (status && *status != "complete" && *status != "cancelled") {
+      throw Error((folder / RunManifest::kFileName).string(), "status",
+                  "the run that wrote this folder is '" + *status +
+                      "': expected a complete run (run reconstruct again)");
+    }
+    if (status && *status == "cancelled") {
+      std::cerr << "warning: the run that wrote " << folder.string()
+                << " was cancelled: its map holds the frames carved before\n";
+    }
     if (o->points) {
       exportPoints(readSurfacePointsPly(folder / "surface_points.ply"), o->out, options);
     } else {

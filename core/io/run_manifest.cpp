@@ -45,15 +45,32 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 
 }  // namespace
 
-std::vector<std::string> filesListedInManifest(const std::filesystem::path& path) {
+namespace {
+
+// The manifest at `path` as JSON; discarded (not an object) when missing or unreadable.
+nlohmann::json readManifest(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    return {};
+    return nlohmann::json::value_t::discarded;
   }
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
-  const nlohmann::json manifest = nlohmann::json::parse(text.str(), nullptr, false);
+  return nlohmann::json::parse(text.str(), nullptr, false);
+}
+
+}  // namespace
+
+std::optional<std::string> manifestStatus(const std::filesystem::path& folder) {
+  const nlohmann::json manifest = readManifest(folder / RunManifest::kFileName);
+  if (!manifest.is_object() || !manifest.contains("status") || !manifest["status"].is_string()) {
+    return std::nullopt;
+  }
+  return manifest["status"].get<std::string>();
+}
+
+std::vector<std::string> filesListedInManifest(const std::filesystem::path& path) {
+  const nlohmann::json manifest = readManifest(path);
   std::vector<std::string> names;
   if (manifest.is_object()) {
     addNamesFrom(manifest.value("files", nlohmann::json()), names);

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,5 +58,9 @@ class RunManifest {
 /// run that did not finish, "earlier_files"); plain file names only. Empty if the manifest is
 /// missing or unreadable.
 std::vector<std::string> filesListedInManifest(const std::filesystem::path& path);
+
+/// The status of the run whose manifest is in `folder` ("running", "complete", "cancelled",
+/// "failed"), or nothing when there is no readable manifest (a folder of an older version).
+std::optional<std::string> manifestStatus(const std::filesystem::path& folder);
 
 }  // namespace sonarcarve

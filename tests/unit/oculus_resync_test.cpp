@@ -20,6 +20,13 @@ constexpr std::size_t kPingIdField = 53;       // version 0/1 layout
 constexpr std::size_t kPayloadSizeField = 10;  // in the message header
 constexpr std::uint32_t kFirstPingId = 1000;
 
+// Writes `value` little-endian at `at` (as the Oculus messages hold their fields).
+void putLittleEndian(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint32_t value) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    bytes.at(at + i) = static_cast<std::uint8_t>(value >> (8 * i));
+  }
+}
+
 // `copies` of the real ping back to back, the k-th with ping id kFirstPingId + k.
 std::vector<std::uint8_t> repeatedFixture(std::size_t copies) {
   const auto one = test::readBytes(test::oculusFixture().string());
@@ -27,7 +34,7 @@ std::vector<std::uint8_t> repeatedFixture(std::size_t copies) {
   for (std::size_t k = 0; k < copies; ++k) {
     std::vector<std::uint8_t> copy = one;
     const std::uint32_t id = kFirstPingId + static_cast<std::uint32_t>(k);
-    std::memcpy(copy.data() + kPingIdField, &id, sizeof(id));
+    putLittleEndian(copy, kPingIdField, id);
     all.insert(all.end(), copy.begin(), copy.end());
   }
   return all;
@@ -127,7 +134,7 @@ TEST(OculusResync, GarbageWithAFalseOculusIdIsSkippedToTheRealMessage) {
   garbage[0] = 0x53;
   garbage[1] = 0x4f;
   const std::uint32_t payload = 100;
-  std::memcpy(garbage.data() + kPayloadSizeField, &payload, sizeof(payload));
+  putLittleEndian(garbage, kPayloadSizeField, payload);
   std::vector<std::uint8_t> bytes(good.begin(), good.begin() + static_cast<long>(size));
   bytes.insert(bytes.end(), garbage.begin(), garbage.end());
   bytes.insert(bytes.end(), good.begin() + static_cast<long>(size), good.end());

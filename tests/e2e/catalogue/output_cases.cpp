@@ -84,6 +84,26 @@ std::vector<CatalogueCase> outputCases() {
            },
        .message = {"mesh.obj: cannot replace the file: Is a directory"},
        .intact = {"mesh.obj/inside"}},
+      {.name = "ExportFromAFolderWhoseRunFailed",
+       .prepare =
+           [](const Workspace& ws) {
+             const std::string rec = writeReconstruction(ws);
+             writeBytes(ws / rec / "manifest.json",
+                        "{\"command\": \"reconstruct\", \"status\": \"failed\"}\n");
+             return "export " + rec + " --out mesh.stl";
+           },
+       .message = {"rec/manifest.json: status: the run that wrote this folder is 'failed'",
+                   "expected a complete run"},
+       .absent = {"mesh.stl"}},
+      {.name = "ExportFromAFolderWhoseRunNeverEnded",
+       .prepare =
+           [](const Workspace& ws) {
+             const std::string rec = writeReconstruction(ws);
+             writeBytes(ws / rec / "manifest.json", "{\"status\": \"running\"}\n");
+             return "export " + rec + " --points --out points.ply";
+           },
+       .message = {"is 'running'", "expected a complete run"},
+       .absent = {"points.ply"}},
       {.name = "NoiseModelOutFolderMissing",
        .prepare =
            [](const Workspace&) {
