@@ -13,6 +13,7 @@
 #include "cli/source_flags.h"
 #include "cli/terminal_progress.h"
 #include "common/error.h"
+#include "denoise/noise_model.h"
 #include "io/atomic_file.h"
 #include "io/frame_source.h"
 #include "io/mission.h"
@@ -93,6 +94,9 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
     std::cerr << "warning: " << warning << "\n";
   }
   const ReconstructionParams params = paramsFrom(o);
+  if (!params.noise_model.empty()) {
+    NoiseModel::load(params.noise_model);  // a bad one fails before the folder is made
+  }
   const std::filesystem::path out(o.out);
   prepareOutputFolder(out);
   const OutputFolderLock lock(out);
