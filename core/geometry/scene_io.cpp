@@ -9,6 +9,7 @@
 #include <vtkSTLReader.h>
 #include <algorithm>
 
+#include "common/available_memory.h"
 #include "common/error.h"
 #include "geometry/internal/vtk_mesh.h"
 #include "io/input_file.h"
@@ -73,12 +74,35 @@ vtkSmartPointer<vtkPolyData> readStl(const std::filesystem::path& path) {
 
 }  // namespace
 
+namespace {
+
+// What reading a mesh may take per byte of its file, at most: an ASCII OBJ vertex ("v 0 0 0",
+// 8 bytes) becomes 12 bytes of floats, VTK's 24 of doubles and the scene's copy; a binary STL
+// triangle (50 bytes) about 150. Eight bytes a byte covers both with room.
+constexpr std::uintmax_t kMeshMemoryPerFileByte = 8;
+
+void requireMemoryToRead(const std::string& file, std::uintmax_t bytes) {
+  const std::optional<AvailableMemory> available = availableMemory();
+  const std::uintmax_t needed = bytes * kMeshMemoryPerFileByte;
+  if (available && needed > available->bytes) {
+    throw Error(file, "",
+                "a mesh of " + std::to_string(bytes >> 10) + " KiB needs up to " +
+                    std::to_string(needed >> 20) + " MiB to read, more than the " +
+                    std::to_string(available->bytes >> 20) + " MiB available (" +
+                    available->source + "): expected a smaller mesh or more memory");
+  }
+}
+
+}  // namespace
+
 Scene loadSceneMesh(const std::filesystem::path& path, float reflectivity) {
   const std::string file = path.string();
   requireRegularFile(path, "a mesh: STL, OBJ or PLY");
-  if (std::filesystem::file_size(path) == 0) {
+  const std::uintmax_t bytes = std::filesystem::file_size(path);
+  if (bytes == 0) {
     throw Error(file, "byte 0", "empty file: expected an STL, OBJ or PLY mesh");
   }
+  requireMemoryToRead(file, bytes);
   const std::string ext = lowerExtension(path);
   vtkSmartPointer<vtkPolyData> poly;
   if (ext == ".stl") {

@@ -130,6 +130,21 @@ std::vector<CatalogueCase> limitCases() {
                    "use a larger voxel size or a smaller region"},
        .absent = {"out/surface_points.ply", "out/report.json", "out/manifest.json"},
        .wrapper = "env SONARCARVE_MEMORY_LIMIT_MB=1"},
+      {.name = "SceneMeshOverTheMemoryAvailable",
+       .prepare =
+           [](const Workspace& ws) {
+             std::string obj;
+             for (int i = 0; i < 20000; ++i) {
+               obj += "v " + std::to_string(i) + ".5 0.25 10.75\n";
+             }
+             obj += "f 1 2 3\n";
+             writeBytes(ws / "big.obj", obj);
+             return std::string("simulate --scene big.obj --max-frames 1 --out sim");
+           },
+       .message = {"big.obj: a mesh of", "MiB to read, more than the 1 MiB available",
+                   "expected a smaller mesh or more memory"},
+       .absent = {"sim"},
+       .wrapper = "env SONARCARVE_MEMORY_LIMIT_MB=1"},
       {.name = "ReconstructUnderAGenerousMemoryLimit",
        .prepare = [](const Workspace&) { return std::string("reconstruct mission --out out"); },
        .outcome = Outcome::Succeeds,

@@ -206,6 +206,7 @@ std::vector<CatalogueCase> outputCases() {
       {.name = "ReconstructWritesAManifest",
        .prepare = [](const Workspace&) { return std::string("reconstruct mission --out out"); },
        .outcome = Outcome::Succeeds,
+       .message = {"\"frames_used\""},
        .holds = {{"out/manifest.json", "\"status\": \"complete\""},
                  {"out/manifest.json", "\"name\": \"report.json\""},
                  {"out/manifest.json", "\"reconstruct\""}}},
