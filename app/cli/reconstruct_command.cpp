@@ -13,7 +13,6 @@
 #include "cli/source_flags.h"
 #include "cli/terminal_progress.h"
 #include "common/error.h"
-#include "denoise/noise_model.h"
 #include "io/atomic_file.h"
 #include "io/frame_source.h"
 #include "io/mission.h"
@@ -94,15 +93,15 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
     std::cerr << "warning: " << warning << "\n";
   }
   const ReconstructionParams params = paramsFrom(o);
-  if (!params.noise_model.empty()) {
-    NoiseModel::load(params.noise_model);  // a bad one fails before the folder is made
-  }
+  // The pipeline checks its parameters and reads a given noise model: a bad one fails before
+  // the output folder is made.
+  const Pipeline pipeline(mission, params, pool);
   const std::filesystem::path out(o.out);
   prepareOutputFolder(out);
   const OutputFolderLock lock(out);
 
   TerminalProgress progress;
-  const ReconstructionResult result = Pipeline(mission, params, pool).run(progress);
+  const ReconstructionResult result = pipeline.run(progress);
   progress.finish();
   std::cerr << "denoising: " << result.detector << ", " << result.denoising << "\n";
   if (result.keep_level.frames > 0) {

@@ -88,13 +88,17 @@ struct BlockChange {
   bool counts = false;  ///< a view or carve-vote count changed
 };
 
-// The counts of one block being carved: views, then carve votes (VoxelMap::counts).
+// The counts of one block being carved: views, then carve votes (VoxelMap::counts); none
+// (nullptr) in a map that keeps no counts, where one vote carves.
 class BlockCounts {
  public:
   BlockCounts(std::uint8_t* counts, int carve_votes, BlockChange& change)
       : counts_(counts), carve_votes_(carve_votes), change_(change) {}
   // A view observed voxel i, above its sonar's axis (elevation > 0) or not.
   void viewed(int i, bool above) {
+    if (counts_ == nullptr) {
+      return;
+    }
     std::uint8_t& v = counts_[i];
     const std::uint8_t side = above ? VoxelMap::kSeenAbove : VoxelMap::kSeenBelow;
     const std::uint8_t next = static_cast<std::uint8_t>(
@@ -106,6 +110,9 @@ class BlockCounts {
   }
   // One view's vote to carve voxel i; true once enough views agree.
   bool votedOut(int i) {
+    if (counts_ == nullptr) {
+      return true;
+    }
     std::uint8_t& votes = counts_[VoxelMap::kBlockVoxels + i];
     bump(votes);
     return votes >= carve_votes_;
@@ -123,7 +130,7 @@ class BlockCounts {
   BlockChange& change_;
 };
 
-// Carves the 512 voxels of one block in `values` and `counts`.
+// Carves the 512 voxels of one block in `values` and `counts` (nullptr: none kept).
 BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
                        const Eigen::Vector3f& first_centre_world, float voxel, float* values,
                        std::uint8_t* counts) {
@@ -323,11 +330,9 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
           std::fill(std::begin(scratch), std::end(scratch), VoxelMap::kUnknown);
           values = scratch;
         }
-        if (counts == nullptr) {
-          // A new block, or a map without counts (one vote carves: counting from 0 each frame
-          // gives the same answer).
+        if (counts == nullptr && map_.hasCounts()) {
           std::fill(std::begin(scratch_counts), std::end(scratch_counts), std::uint8_t{0});
-          counts = scratch_counts;
+          counts = scratch_counts;  // a new block: its counts start at 0
         }
         const Eigen::Vector3f first =
             (origin + Eigen::Vector3d::Constant(0.5 * voxel)).cast<float>();
@@ -337,7 +342,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
         if (change.values) {
           ++my_changed;
           map_.storeBlock(b, allCarved(values) ? nullptr : values, stamp, counts);
-        } else if (change.counts && values == scratch && map_.hasCounts()) {
+        } else if (change.counts && values == scratch) {
           // Votes on voxels not yet carved nor lit: kept for the views to come.
           map_.storeBlock(b, values, map_.stamp(b), counts);
         }

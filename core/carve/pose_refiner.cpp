@@ -36,6 +36,20 @@ Eigen::Matrix3d rotationAboutSonarAxes(const Eigen::Vector3d& roll_pitch_yaw) {
       .toRotationMatrix();
 }
 
+// A correction from the search's vector (translation, then rotation), and back.
+PoseCorrection correctionOf(const Vector6d& x) {
+  PoseCorrection c;
+  c.translation_world_m = x.head<3>();
+  c.rotation_sonar_rad = x.tail<3>();
+  return c;
+}
+
+Vector6d vectorOf(const PoseCorrection& c) {
+  Vector6d x;
+  x << c.translation_world_m, c.rotation_sonar_rad;
+  return x;
+}
+
 }  // namespace
 
 Eigen::Isometry3d PoseCorrection::applied(const Eigen::Isometry3d& T_world_sonar_prior) const {
@@ -167,11 +181,9 @@ double PoseRefiner::score(const cv::Mat& field, const std::vector<Eigen::Vector3
 double PoseRefiner::scoreOf(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar_prior,
                             const PoseCorrection& correction) const {
   const std::vector<Eigen::Vector3f> q = settledVoxels(T_world_sonar_prior, T_world_sonar_prior);
-  Vector6d x;
-  x << correction.translation_world_m, correction.rotation_sonar_rad;
-  return q.empty()
-             ? 0.0
-             : score(edgeField(image), q, T_world_sonar_prior, x) / static_cast<double>(q.size());
+  return q.empty() ? 0.0
+                   : score(edgeField(image), q, T_world_sonar_prior, vectorOf(correction)) /
+                         static_cast<double>(q.size());
 }
 
 Vector6d PoseRefiner::clamped(Vector6d x) const {
@@ -189,17 +201,9 @@ PoseCorrection PoseRefiner::refine(const cv::Mat& image,
     throw Error("pose refinement", "frame", "image does not match the sonar model");
   }
   carried_ = clamped(carried_);
-  PoseCorrection result;
-  const auto fill = [&](const Vector6d& x) {
-    result.translation_world_m = x.head<3>();
-    result.rotation_sonar_rad = x.tail<3>();
-  };
-  fill(carried_);
-  PoseCorrection start;
-  start.translation_world_m = carried_.head<3>();
-  start.rotation_sonar_rad = carried_.tail<3>();
+  PoseCorrection result = correctionOf(carried_);
   const std::vector<Eigen::Vector3f> q =
-      settledVoxels(start.applied(T_world_sonar_prior), T_world_sonar_prior);
+      settledVoxels(result.applied(T_world_sonar_prior), T_world_sonar_prior);
   result.voxels = q.size();
   if (q.size() < params_.min_settled_voxels) {
     return result;
@@ -260,7 +264,8 @@ PoseCorrection PoseRefiner::refine(const cv::Mat& image,
     return result;
   }
   carried_ = best.x;
-  fill(best.x);
+  result.translation_world_m = best.x.head<3>();
+  result.rotation_sonar_rad = best.x.tail<3>();
   result.aligned = true;
   return result;
 }

@@ -72,10 +72,6 @@ vtkSmartPointer<vtkPolyData> readStl(const std::filesystem::path& path) {
   return poly;
 }
 
-}  // namespace
-
-namespace {
-
 // What reading a mesh may take per byte of its file, at most: an ASCII OBJ vertex ("v 0 0 0",
 // 8 bytes) becomes 12 bytes of floats, VTK's 24 of doubles and the scene's copy; a binary STL
 // triangle (50 bytes) about 150. Eight bytes a byte covers both with room.

@@ -43,10 +43,6 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-}  // namespace
-
-namespace {
-
 // The manifest at `path` as JSON; discarded (not an object) when missing or unreadable.
 nlohmann::json readManifest(const std::filesystem::path& path) {
   std::error_code ec;

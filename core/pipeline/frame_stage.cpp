@@ -36,13 +36,13 @@ std::vector<PosedFrame> placeFrames(const Mission& mission, const FrameSelection
 }
 
 NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFrame>& frames,
-                             const DetectorParams& detector, const std::string& noise_model,
-                             Progress& progress) {
+                             const DetectorParams& detector, const std::string& given_path,
+                             std::shared_ptr<const NoiseModel> given, Progress& progress) {
   NoiseChoice choice;
-  if (!noise_model.empty()) {
-    choice.model = std::make_shared<const NoiseModel>(NoiseModel::load(noise_model));
+  if (given) {
+    choice.model = std::move(given);
     choice.detector = detector.resolved(true);
-    choice.reason = "noise model " + noise_model;
+    choice.reason = "noise model " + given_path;
     return choice;
   }
   choice.detector = detector.resolved(false);

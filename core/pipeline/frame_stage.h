@@ -43,10 +43,11 @@ struct NoiseChoice {
 /// Chooses the noise model: the file `noise_model` when given; for the `auto` detector
 /// without one, a model learned from the placed frames themselves
 /// (denoise/mission_noise_model.h), or no denoising when the frames carry no background at
-/// all (noise-free simulations). Throws Error naming the file on a bad model file.
+/// all (noise-free simulations). `given` is the model read from the file `given_path`, or
+/// null when none was given.
 NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFrame>& frames,
-                             const DetectorParams& detector, const std::string& noise_model,
-                             Progress& progress);
+                             const DetectorParams& detector, const std::string& given_path,
+                             std::shared_ptr<const NoiseModel> given, Progress& progress);
 
 /// Reads a frame of the mission and removes its noise. Thread safe.
 class DenoisedFrames {

@@ -8,6 +8,7 @@
 
 #include "carve/carving_geometry.h"
 #include "common/error.h"
+#include "denoise/noise_model.h"
 #include "pipeline/carve_stage.h"
 #include "pipeline/frame_stage.h"
 #include "pipeline/size_limits.h"
@@ -42,6 +43,9 @@ Pipeline::Pipeline(const Mission& mission, ReconstructionParams params, ThreadPo
     : mission_(mission),
       params_(validated(params)),
       sonar_(carvingSonar(mission, params_)),
+      noise_model_(params_.noise_model.empty()
+                       ? nullptr
+                       : std::make_shared<const NoiseModel>(NoiseModel::load(params_.noise_model))),
       pool_(pool) {}
 
 ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* observer,
@@ -68,7 +72,8 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   requireBoundedSizes(bounds, sonar_, params_.carve, pool_.size());
   NoiseChoice noise;
   try {
-    noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, progress);
+    noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, noise_model_,
+                             progress);
   } catch (const Cancelled&) {
     result.cancelled = true;
     return result;

@@ -45,8 +45,8 @@ struct ReconstructionResult {
 
 class Pipeline {
  public:
-  /// Validates the parameters (Error naming the parameter). `mission` and `pool` must outlive
-  /// the pipeline.
+  /// Validates the parameters (Error naming the parameter) and reads the noise model they
+  /// name (Error naming the file). `mission` and `pool` must outlive the pipeline.
   Pipeline(const Mission& mission, ReconstructionParams params, ThreadPool& pool);
 
   /// Runs every stage. Throws Error if no frame can be used; on cancellation returns with
@@ -63,6 +63,7 @@ class Pipeline {
   const Mission& mission_;
   ReconstructionParams params_;
   SonarModel sonar_;
+  std::shared_ptr<const NoiseModel> noise_model_;  ///< the params' file, read once; or null
   ThreadPool& pool_;
 };
 

@@ -99,7 +99,7 @@ TEST_F(MissionNoise, AutoLearnsFromTheMissionAndNeverChoosesNoneOnSpeckle) {
   for (std::size_t i : all())
     frames.push_back({i, Eigen::Isometry3d::Identity()});
   DetectorParams detector;  // auto
-  const NoiseChoice choice = chooseNoiseModel(riser, frames, detector, "", progress);
+  const NoiseChoice choice = chooseNoiseModel(riser, frames, detector, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::ZTest);
   ASSERT_TRUE(choice.model);
   EXPECT_NE(choice.reason.find("learned from 24 of the mission's own frames"), std::string::npos)
@@ -111,7 +111,7 @@ TEST_F(MissionNoise, TooFewFramesGiveNoDenoisingAndSayWhy) {
   const std::vector<PosedFrame> two{{0, Eigen::Isometry3d::Identity()},
                                     {1, Eigen::Isometry3d::Identity()}};
   const NoiseChoice choice =
-      chooseNoiseModel(mission("riser"), two, DetectorParams{}, "", progress);
+      chooseNoiseModel(mission("riser"), two, DetectorParams{}, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::None);
   EXPECT_NE(choice.reason.find("at least 3"), std::string::npos) << choice.reason;
   EXPECT_NE(choice.reason.find("--noise-model"), std::string::npos) << choice.reason;
@@ -128,7 +128,7 @@ TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
   std::vector<PosedFrame> frames;
   for (std::size_t i = 0; i < 10; ++i)
     frames.push_back({i, Eigen::Isometry3d::Identity()});
-  const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", progress);
+  const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::None);
   EXPECT_FALSE(choice.model);
   EXPECT_NE(choice.reason.find("noise-free"), std::string::npos) << choice.reason;
