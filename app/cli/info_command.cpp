@@ -83,6 +83,16 @@ void printText(const SonarModel& sonar, const MissionSummary& s) {
   }
 }
 
+// The first frames' times (all of a short recording), seconds on the navigation clock.
+void printFrameTimes(const Mission& mission) {
+  constexpr std::size_t kShown = 10;
+  std::printf("Frame times ");
+  for (std::size_t k = 0; k < mission.frames.size() && k < kShown; ++k) {
+    std::printf(" %.6f", mission.frames[k].time_s);
+  }
+  std::printf("%s s\n", mission.frames.size() > kShown ? " ..." : "");
+}
+
 std::vector<std::string> linesOf(const std::vector<std::string>& a,
                                  const std::vector<std::string>& b) {
   std::vector<std::string> all = a;
@@ -145,8 +155,8 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
   auto json = std::make_shared<bool>(false);
   auto source = std::make_shared<SourceFlags>();
   cmd->add_option("mission", *path,
-                  "Mission folder or its mission.yaml, or a vendor log (Oculus messages or "
-                  ".oculus recording)")
+                  "Mission folder or its mission.yaml, or a vendor log (Oculus messages, "
+                  ".oculus or .aris recording)")
       ->required();
   cmd->add_flag("--json", *json, "Print the summary as JSON for scripts");
   addSourceFlags(*cmd, *source);
@@ -169,6 +179,7 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
       std::printf("Mission      %s (%s, %s)\n", summary.name.c_str(),
                   mission.folder.string().c_str(), mission.source->kind().c_str());
       printText(mission.sonar, summary);
+      printFrameTimes(mission);
       for (const std::string& warning : mission.warnings) {
         std::printf("Note         %s\n", warning.c_str());
       }

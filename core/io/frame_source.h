@@ -64,5 +64,8 @@ Mission openMission(const std::filesystem::path& path, const OpenOptions& option
 /// Applies the options' navigation, mounting and time offset to an opened mission (readers
 /// call it; a navigation or mounting given by the user replaces the recording's own).
 void applyOpenOptions(Mission& mission, const OpenOptions& options);
+/// Only the options' navigation and mounting (for readers that apply the time offset and the
+/// aperture while building the mission).
+void applyNavigationAndMounting(Mission& mission, const OpenOptions& options);
 
 }  // namespace sonarcarve

@@ -81,4 +81,11 @@ void applyOpenOptions(Mission& mission, const OpenOptions& options) {
   }
 }
 
+void applyNavigationAndMounting(Mission& mission, const OpenOptions& options) {
+  OpenOptions rest = options;
+  rest.time_offset_s = 0.0;
+  rest.vertical_aperture_deg.reset();
+  applyOpenOptions(mission, rest);
+}
+
 }  // namespace sonarcarve

@@ -54,15 +54,12 @@ Mission openOculusLog(const std::filesystem::path& path, const OpenOptions& opti
   if (!log->skippedSummary().empty()) {
     mission.warnings.push_back(log->skippedSummary());
   }
-  OpenOptions rest = options;
-  rest.time_offset_s = 0.0;
-  rest.vertical_aperture_deg.reset();
   if (options.nav_csv.empty()) {
     mission.warnings.push_back(
         "no navigation given (--nav): the vehicle is stationary at the origin with zero "
         "attitude");
   }
-  applyOpenOptions(mission, rest);
+  applyNavigationAndMounting(mission, options);
   mission.source = std::make_shared<const OculusSource>(std::move(log), std::move(plan));
   return mission;
 }

@@ -10,6 +10,7 @@
 #include "common/error.h"
 #include "denoise/noise_model.h"
 #include "geometry/scene_io.h"
+#include "io/aris_file.h"
 #include "io/frame_png.h"
 #include "io/mission.h"
 #include "io/nav_import.h"
@@ -91,6 +92,17 @@ void oculusLog(std::span<const std::uint8_t> bytes) {
   acceptingErrors([&] { decodeOculusPing(bytes, 0, "fuzz.raw"); });
 }
 
+void arisFile(std::span<const std::uint8_t> bytes) {
+  const auto path = scratch() / "fuzz.aris";
+  write(path, text(bytes));
+  acceptingErrors([&] {
+    const ArisFile file = ArisFile::open(path);
+    for (std::size_t k = 0; k < file.frames().size(); ++k) {
+      acceptingErrors([&] { file.image(k); });
+    }
+  });
+}
+
 void mission(std::span<const std::uint8_t> bytes) {
   const auto files = parts(bytes, 3);
   const auto dir = scratch() / "mission";
@@ -151,10 +163,11 @@ void referenceMesh(std::span<const std::uint8_t> bytes) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {
-      {"oculus", oculusLog},       {"mission", mission},      {"frame_png", framePng},
-      {"ply", plyPointCloud},      {"nav_import", navImport}, {"params_yaml", paramsYaml},
-      {"noise_model", noiseModel}, {"mesh", referenceMesh},   {"session", sessionFile}};
+  static const std::vector<Target> all = {{"oculus", oculusLog},       {"mission", mission},
+                                          {"frame_png", framePng},     {"ply", plyPointCloud},
+                                          {"nav_import", navImport},   {"params_yaml", paramsYaml},
+                                          {"noise_model", noiseModel}, {"mesh", referenceMesh},
+                                          {"session", sessionFile},    {"aris", arisFile}};
   return all;
 }
 

@@ -32,6 +32,8 @@ void paramsYaml(std::span<const std::uint8_t> bytes);
 void noiseModel(std::span<const std::uint8_t> bytes);
 /// A reference or scene mesh: loadSceneMesh on the same bytes as an STL, an OBJ and a PLY.
 void referenceMesh(std::span<const std::uint8_t> bytes);
+/// An ARIS recording: ArisFile::open, then every frame's image.
+void arisFile(std::span<const std::uint8_t> bytes);
 /// A workbench session file (loadSession: YAML with the parameters embedded).
 void sessionFile(std::span<const std::uint8_t> bytes);
 

@@ -113,6 +113,21 @@ rayleigh_sigma: !!opencv-matrix
 """
 
 
+def aris_recording(frames=2, samples=4):
+    """An ARIS file: the file header, then frames of 48 beams (ping mode 1) with the sample
+    fixture's geometry but only `samples` samples per beam (field offsets: FrameHeader.h)."""
+    b = bytearray(1024)
+    struct.pack_into("<II", b, 0, 0x05464444, frames)
+    for k in range(frames):
+        h = bytearray(1024)
+        struct.pack_into("<IQ", h, 0, k, 1371198079122519 + 152500 * k)
+        for at, value in ((436, 1), (452, 14), (468, samples), (476, 4593), (480, 1), (516, 1)):
+            struct.pack_into("<I", h, at, value)
+        struct.pack_into("<f", h, 464, 1435.93)
+        b += h + bytes((7 * i + k) % 256 for i in range(48 * samples))
+    return bytes(b)
+
+
 def main():
     write("oculus", "v0_8bit", oculus_ping(0, 16, 10))
     write("oculus", "v2_16bit_gain", oculus_ping(2, 8, 4, sixteen=True, gain=True))
@@ -161,6 +176,8 @@ def main():
           "params: {voxel_size_m: 0.05, engine: fast, detector: {mode: cfar}}\n")
     write("session", "minimal.sonarcarve",
           "format: sonarcarve-session\nversion: 1\nmission: m\n")
+    write("aris", "two_frames.aris", aris_recording())
+    write("aris", "cut_second_frame.aris", aris_recording()[:-10])
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets built by the fuzz preset, one after another.
 #   tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default 240 s, every target)
-# Targets: oculus mission frame_png ply nav_import params_yaml noise_model mesh session. The working corpus grows in
+# Targets: oculus mission frame_png ply nav_import params_yaml noise_model mesh session aris. The working corpus grows in
 # build/fuzz/corpus/<target> (the seeds in tests/fuzz/corpus/<target> are read, not written);
 # crash, leak, timeout and out-of-memory inputs land in build/fuzz/artifacts/<target>/. Copy
 # each one into tests/fuzz/corpus/<target>/ once fixed: the unit test FuzzRegression replays it.
@@ -12,9 +12,10 @@ shift || true
 declare -A binary=([oculus]=fuzz_oculusLog [mission]=fuzz_mission [frame_png]=fuzz_framePng
                    [ply]=fuzz_plyPointCloud [nav_import]=fuzz_navImport
                    [params_yaml]=fuzz_paramsYaml [noise_model]=fuzz_noiseModel
-                   [mesh]=fuzz_referenceMesh [session]=fuzz_sessionFile)
+                   [mesh]=fuzz_referenceMesh [session]=fuzz_sessionFile
+                   [aris]=fuzz_arisFile)
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(oculus mission frame_png ply nav_import params_yaml noise_model mesh session)
+[ ${#targets[@]} -gt 0 ] || targets=(oculus mission frame_png ply nav_import params_yaml noise_model mesh session aris)
 status=0
 for t in "${targets[@]}"; do
   exe="build/fuzz/tests/fuzz/${binary[$t]}"
