@@ -46,20 +46,22 @@ constexpr float kDarkPixelLevel = 0.5f;
 // Beam-aware: how far off the axis this frame can carve. A pixel carves a voxel where its bound
 // I / p(theta) is at or below the keep level, so nowhere p(theta) is under the faintest
 // bound a pixel gives on the axis over the keep level; past that the frame does nothing and
-// its voxels are not visited (a detector's frames, whose lit pixels are all far above the keep
-// level, carve inside +-aperture/2 only, at the paper's cost).
+// its voxels are not visited. Behind a detector (dark pixels not exact) a frame carves inside
+// +-aperture/2 only, at the paper's cost: a dark pixel there may hide a return up to the
+// detection level, far above the keep level, so it bounds nothing off the axis, and a faint
+// detected pixel, which holds more than a dark one, must not carve where a dark one cannot.
 double carvedHalfElevation(const cv::Mat& pixels, const SonarModel& sonar, float keep_level,
                            bool dark_is_exact, double main_lobe_half) {
-  double faintest = std::numeric_limits<double>::infinity();
-  if (dark_is_exact) {
-    faintest = kDarkPixelLevel;
+  const double aperture_half = 0.5 * sonar.verticalAperture();
+  if (!dark_is_exact) {
+    return aperture_half;
   }
+  double faintest = kDarkPixelLevel;
   double min_lit = 0.0;
   cv::minMaxLoc(pixels, &min_lit, nullptr, nullptr, nullptr, pixels > 0.0f);
   if (min_lit > 0.0) {
     faintest = std::min(faintest, min_lit);
   }
-  const double aperture_half = 0.5 * sonar.verticalAperture();
   const double gain = faintest / static_cast<double>(keep_level);
   if (!(gain < 0.5)) {
     return aperture_half;

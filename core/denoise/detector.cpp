@@ -3,9 +3,33 @@
 #include <algorithm>
 #include <cmath>
 
+#include <opencv2/imgproc.hpp>
+
 #include "common/error.h"
 
 namespace sonarcarve {
+namespace {
+
+// What a pixel the Z-test keeps reads at least (counts).
+constexpr float kDetectedMinimum = 1.0f;
+
+// Each pixel's median with its neighbours in bearing, on the same range bin (edge beams
+// repeat themselves).
+cv::Mat medianAcrossBeams(const cv::Mat& image) {
+  cv::Mat padded;
+  cv::copyMakeBorder(image, padded, 0, 0, 1, 1, cv::BORDER_REPLICATE);
+  const cv::Mat left = padded.colRange(0, image.cols);
+  const cv::Mat centre = padded.colRange(1, image.cols + 1);
+  const cv::Mat right = padded.colRange(2, image.cols + 2);
+  cv::Mat low, high, median;
+  cv::min(left, centre, low);
+  cv::max(left, centre, high);
+  cv::min(high, right, high);
+  cv::max(low, high, median);
+  return median;
+}
+
+}  // namespace
 
 DetectorParams DetectorParams::resolved(bool have_noise_model) const {
   DetectorParams p = *this;
@@ -70,8 +94,14 @@ cv::Mat Detector::zTest(const cv::Mat& image) const {
   if (params_.smoothing > 1) {
     keep &= image > model_->mean();
   }
+  // A kept pixel carries its return's estimate, not the noise under it: the median of its
+  // beam and the two beside it, less the noise's mean. The median takes the speckle's
+  // deepest dip out without spreading a bright neighbour's return into it. At least one
+  // count: the pixel was detected, and the seed paper's minimum carves only what reads 0.
+  cv::Mat signal = medianAcrossBeams(image) - model_->mean();
+  signal = cv::max(signal, kDetectedMinimum);
   cv::Mat out(image.size(), CV_32F, cv::Scalar(0.0f));
-  image.copyTo(out, keep);
+  signal.copyTo(out, keep);
   return out;
 }
 

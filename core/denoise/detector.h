@@ -1,7 +1,9 @@
 // Detectors that separate returns from noise in a polar frame, before carving:
 //   none         the image as it is
 //   ztest        the seed paper's per-pixel Z-test against a NoiseModel: a pixel is kept
-//                (with its intensity) where (I - mean) / stddev > z, else it is empty water
+//                where (I - mean) / stddev > z, else it is empty water; a kept pixel
+//                carries its return's estimate: the median of its beam and the two beside
+//                it at its range, less the noise's mean (at least 1 count)
 //   cfar         cell-averaging CFAR along range, needing no empty-water recording: the
 //                power I^2 of a cell is compared with alpha times the mean power of
 //                `train` cells on each side beyond `guard` cells; alpha sets the false-alarm
@@ -48,7 +50,8 @@ struct DetectorParams {
   double cfar_pfa = 0.05;  ///< false-alarm probability per cell (min-carving removes them)
   /// Side of the box filter applied before the test (1 = none): it averages the speckle of
   /// returns, so that one dark speckle does not carve a real surface. A noise model must
-  /// have been learned with the same smoothing. The kept intensity is the original pixel's.
+  /// have been learned with the same smoothing. The smoothing decides; it does not set the kept
+  /// pixel's value.
   int smoothing = kDefaultSmoothing;
 
   bool needsNoiseModel() const {

@@ -53,16 +53,30 @@ TEST(ZTest, FalseAlarmRateOnGaussianNoiseMatchesTheNormalTail) {
   }
 }
 
-TEST(ZTest, KeptPixelsKeepTheirIntensity) {
+// A kept pixel reads its return's estimate: the median over its beam and the two beside it,
+// less the noise's mean (100 counts here, standard deviation 10: z = 2 keeps above 120).
+TEST(ZTest, KeptPixelsCarryTheirReturnAboveTheNoise) {
   const SonarModel sonar = smallSonar();
   cv::Mat image(sonar.rows(), sonar.cols(), CV_32F, cv::Scalar(100.0f));
-  image.at<float>(10, 20) = 250.0f;
+  // A return of 250 counts over five beams with one speckle dip to 130 in its middle.
+  image(cv::Rect(18, 10, 5, 1)).setTo(250.0f);
+  image.at<float>(10, 20) = 130.0f;
+  // A faint pixel (130) beside a very bright one (5000) on the same range bin.
+  image.at<float>(40, 10) = 130.0f;
+  image.at<float>(40, 11) = 5000.0f;
+  // A lone bright pixel with nothing beside it.
+  image.at<float>(30, 5) = 250.0f;
   DetectorParams params;
   params.mode = DetectorMode::ZTest;
   params.smoothing = 1;
   const cv::Mat out = Detector(params, gaussianModel(sonar), sonar).apply(image);
-  EXPECT_EQ(out.at<float>(10, 20), 250.0f);
-  EXPECT_EQ(cv::countNonZero(out), 1);
+  for (int col = 18; col <= 22; ++col) {
+    EXPECT_EQ(out.at<float>(10, col), 150.0f) << "the dip reads as its neighbours, col " << col;
+  }
+  EXPECT_EQ(out.at<float>(40, 10), 30.0f) << "a bright neighbour does not spread into it";
+  EXPECT_EQ(out.at<float>(40, 11), 30.0f) << "a return in one beam alone reads as its neighbours";
+  EXPECT_EQ(out.at<float>(30, 5), 1.0f) << "detected, with no return across its beams";
+  EXPECT_EQ(cv::countNonZero(out), 8);
 }
 
 TEST(Cfar, DetectsAPointTargetOfKnownSnrAndHoldsItsFalseAlarmRate) {
