@@ -174,6 +174,8 @@ NoiseModel learnNoiseFromMission(const Mission& mission, const std::vector<std::
     stats->structure_fraction = static_cast<double>(replaced) / (static_cast<double>(rows) * cols);
     std::vector<double> levels(mean.begin<float>(), mean.end<float>());
     stats->background_median = median(levels);
+    stats->dark_fraction = static_cast<double>(std::count(levels.begin(), levels.end(), 0.0)) /
+                           static_cast<double>(levels.size());
   }
   return NoiseModel(mean, stddev, sigma, mission.sonar, static_cast<int>(images.size()), smoothing);
 }

@@ -28,8 +28,17 @@ struct MissionNoiseStats {
   std::size_t frames_used = 0;
   double structure_fraction = 0.0;  ///< pixels given the background shape's value
   double background_median = 0.0;   ///< median over pixels of the learned mean intensity
-  /// True when the frames carry a background at all (speckle): noise-free frames give 0.
-  bool has_background() const { return background_median > 0.0; }
+  double dark_fraction = 0.0;       ///< pixels whose learned mean is 0: dark in most frames
+  /// True when the frames carry a background (speckle), which lies over every pixel. Frames
+  /// with no background are dark wherever nothing returns: noise-free frames of a riser are
+  /// dark almost everywhere, those of a seabed survey at least in the water before the
+  /// seabed's first return, while the seabed lights most pixels in every frame.
+  bool has_background() const {
+    return background_median > 0.0 && dark_fraction <= kMaxDarkFractionWithBackground;
+  }
+  /// A background may leave this many pixels dark (a sonar that blanks its first range
+  /// bins, counts quantised to 0 where the background is lowest).
+  static constexpr double kMaxDarkFractionWithBackground = 0.05;
 };
 
 /// Fewest frames a model is learned from: a pixel's median and quartiles need three samples;

@@ -134,5 +134,38 @@ TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
   EXPECT_NE(choice.reason.find("noise-free"), std::string::npos) << choice.reason;
 }
 
+// A pitched-down survey of the seabed on the realistic beam: the seabed lights most pixels of
+// every frame (all ranges past its first return, across the fan), which is no background.
+TEST(MissionNoiseFree, ASeabedInEveryFrameIsNotTakenForNoise) {
+  const test::ScratchDir dir;
+  TrajectorySpec survey;
+  survey.kind = "lawnmower";
+  ImagingSettings imaging;
+  imaging.beam = SimulatedBeam::Realistic;
+  SimulationRequest request{makeDemoScene("seabed-objects"),
+                            "seabed-objects",
+                            paperSonar(),
+                            survey,
+                            imaging,
+                            NoiseSpec::none(),
+                            NavErrorSpec{},
+                            false,
+                            6,
+                            dir.path() / "m"};
+  SilentProgress progress;
+  runSimulation(request, progress, pool());
+  const Mission m = readMission(dir.path() / "m");
+  std::vector<std::size_t> indices{0, 1, 2, 3, 4, 5};
+  MissionNoiseStats stats;
+  learnNoiseFromMission(m, indices, kSmoothing, progress, &stats);
+  EXPECT_GT(stats.background_median, 0.0) << "the seabed lights most pixels";
+  EXPECT_FALSE(stats.has_background()) << "dark fraction " << stats.dark_fraction;
+  std::vector<PosedFrame> frames;
+  for (const std::size_t i : indices)
+    frames.push_back({i, Eigen::Isometry3d::Identity()});
+  const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", nullptr, progress);
+  EXPECT_EQ(choice.detector.mode, DetectorMode::None) << choice.reason;
+}
+
 }  // namespace
 }  // namespace sonarcarve
