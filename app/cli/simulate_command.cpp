@@ -112,7 +112,7 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto o = std::make_shared<SimulateOptions>();
   cmd->add_option(
          "--scene", o->scene,
-         "riser | jacket-node | seabed-objects | mesh file (STL, OBJ, PLY) in world NED metres")
+         "riser | jacket-node | seabed-objects | manifold | mesh file (STL, OBJ, PLY) in world NED metres")
       ->required();
   cmd->add_option("--trajectory", o->trajectory,
                   "vertical | orbit | lawnmower | navigation CSV of vehicle poses; auto picks the "

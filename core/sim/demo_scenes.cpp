@@ -120,10 +120,44 @@ Scene seabedObjects() {
   return scene;
 }
 
+// A subsea production template: a manifold on a mud mat, on a flat seabed at 20 m. Large faces
+// that look up (the mat, the manifold's roof, the valve decks) beside pipes: a header along the
+// roof, valve stems and hand wheels, flowline spools along the seabed and a jumper arching over
+// it to the east.
+Scene manifold() {
+  Scene scene;
+  scene.name = "manifold";
+  const double floor = 20.0;
+  scene.append(seabed({0, 0, floor}, 24.0, 0.0, 48, 0.3f));
+  scene.append(box({0, 0, floor - 0.05}, {3.6, 2.8, 0.1}, 0.0, 0.6f));     // mud mat
+  scene.append(box({0, 0, floor - 0.6}, {2.4, 1.6, 1.0}, 0.0, 0.9f));      // manifold body
+  scene.append(box({0.9, 0, floor - 1.15}, {0.6, 1.2, 0.1}, 0.0, 0.85f));  // valve deck
+  scene.append(tube({-1.4, 0, floor - 1.25}, {1.4, 0, floor - 1.25}, 0.15, 32, 0.8f));  // header
+  for (const double east : {-0.5, 0.5}) {
+    const double top = floor - 1.75;
+    scene.append(tube({0.9, east, floor - 1.2}, {0.9, east, top}, 0.06, 16, 0.8f));  // stem
+    scene.append(tube({0.9, east, top}, {0.9, east, top - 0.05}, 0.22, 32, 0.85f));  // wheel
+  }
+  for (const double east : {-1.0, 1.0}) {  // flowline spools leaving north and south
+    for (const double north : {-1.0, 1.0}) {
+      scene.append(tube({north * 1.2, east * 0.5, floor - 0.25},
+                        {north * 4.5, east * 0.5, floor - 0.25}, 0.15, 32, 0.75f));
+    }
+  }
+  // A jumper from the body's east face, up and over, down to the seabed 3 m away.
+  const Eigen::Vector3d a(0, 0.8, floor - 0.5), b(0, 1.8, floor - 1.8), c(0, 3.0, floor - 1.8),
+      d(0, 3.8, floor - 0.25);
+  for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}}) {
+    scene.append(tube(from, to, 0.12, 24, 0.8f));
+  }
+  scene.target = {Eigen::Vector3d(0, 0, floor - 1.0), floor - 2.0, floor, floor};
+  return scene;
+}
+
 }  // namespace
 
 std::vector<std::string> demoSceneNames() {
-  return {"riser", "jacket-node", "seabed-objects"};
+  return {"riser", "jacket-node", "seabed-objects", "manifold"};
 }
 
 bool isDemoScene(const std::string& name) {
@@ -136,7 +170,7 @@ bool isDemoScene(const std::string& name) {
 }
 
 std::string usualTrajectory(const std::string& scene) {
-  return scene == "seabed-objects" ? "lawnmower" : "vertical";
+  return scene == "seabed-objects" || scene == "manifold" ? "lawnmower" : "vertical";
 }
 
 Scene makeDemoScene(const std::string& name) {
@@ -149,7 +183,11 @@ Scene makeDemoScene(const std::string& name) {
   if (name == "seabed-objects") {
     return seabedObjects();
   }
-  throw Error("scene", name, "unknown demo scene: expected riser, jacket-node or seabed-objects");
+  if (name == "manifold") {
+    return manifold();
+  }
+  throw Error("scene", name,
+              "unknown demo scene: expected riser, jacket-node, seabed-objects or manifold");
 }
 
 }  // namespace sonarcarve

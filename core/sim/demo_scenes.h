@@ -3,6 +3,9 @@
 //                   near the top and two tie-back cables running down to the seabed at 20 m
 //   jacket-node     a 0.8 m leg with a node can and four 0.44 m braces at several angles
 //   seabed-objects  two boxes, a lying cylinder and a sphere on a seabed sloping 3 degrees
+//   manifold        a subsea template on a flat seabed: mud mat, manifold body with a valve
+//                   deck, header pipe, valve stems with hand wheels, flowline spools and a
+//                   jumper (large faces that look up, beside pipes)
 #pragma once
 
 #include <string>
@@ -16,8 +19,8 @@ std::vector<std::string> demoSceneNames();
 bool isDemoScene(const std::string& name);
 /// Throws Error for an unknown name.
 Scene makeDemoScene(const std::string& name);
-/// The trajectory a scene is usually inspected with: lawnmower over seabed-objects,
-/// vertical otherwise (a loaded mesh included).
+/// The trajectory a scene is usually inspected with: lawnmower over seabed-objects
+/// and the manifold, vertical otherwise (a loaded mesh included).
 std::string usualTrajectory(const std::string& scene);
 
 }  // namespace sonarcarve
