@@ -5,6 +5,7 @@
 #include <QBuffer>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDesktopServices>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
@@ -24,6 +25,7 @@
 #include <QStyle>
 #include <QTime>
 #include <QToolBar>
+#include <QUrl>
 #include <QVBoxLayout>
 
 #include "carve/occupancy_export.h"
@@ -32,6 +34,7 @@
 #include "frame_image.h"
 #include "frame_timeline.h"
 #include "geometry/scene_io.h"
+#include "gui_conventions.h"
 #include "import_dialog.h"
 #include "io/atomic_file.h"
 #include "io/frame_source.h"
@@ -168,8 +171,10 @@ void MainWindow::buildMenus() {
     }
   });
   file->addAction(tr("Save s&ession…"), QKeySequence::Save, this, [this] {
-    const QString f = QFileDialog::getSaveFileName(this, tr("Save the session"), QString(),
-                                                   tr("SonarCarve sessions (*.sonarcarve)"));
+    const QString f =
+        withSuffix(QFileDialog::getSaveFileName(this, tr("Save the session"), QString(),
+                                                tr("SonarCarve sessions (*.sonarcarve)")),
+                   ".sonarcarve");
     if (!f.isEmpty()) {
       saveSession(f);
     }
@@ -183,27 +188,32 @@ void MainWindow::buildMenus() {
     }
   });
   file->addAction(tr("Save &parameters…"), this, [this] {
-    const QString f = QFileDialog::getSaveFileName(this, tr("Save parameters"), "params.yaml",
-                                                   tr("Parameters (*.yaml *.yml)"));
+    const QString f =
+        withSuffix(QFileDialog::getSaveFileName(this, tr("Save parameters"), "params.yaml",
+                                                tr("Parameters (*.yaml *.yml)")),
+                   ".yaml", {".yml"});
     if (!f.isEmpty()) {
       saveParams(f);
     }
   });
   file->addSeparator();
   QMenu* exports = file->addMenu(tr("&Export"));
-  const auto add_export = [&](const QString& label, Export kind, const QString& filter) {
-    exports->addAction(label, this, [this, kind, filter] {
-      const QString f = QFileDialog::getSaveFileName(this, tr("Export"), QString(), filter);
+  const auto add_export = [&](const QString& label, Export kind, const QString& kind_name,
+                              const QString& suffix) {
+    exports->addAction(label, this, [this, kind, kind_name, suffix] {
+      const QString filter = QStringLiteral("%1 (*%2)").arg(kind_name, suffix);
+      const QString f =
+          withSuffix(QFileDialog::getSaveFileName(this, tr("Export"), QString(), filter), suffix);
       if (!f.isEmpty()) {
         exportTo(kind, f);
       }
     });
   };
-  add_export(tr("Surface points (PLY)…"), Export::SurfacePly, tr("PLY (*.ply)"));
-  add_export(tr("Map (OctoMap .bt)…"), Export::MapBt, tr("OctoMap (*.bt)"));
-  add_export(tr("Mesh (PLY)…"), Export::MeshPly, tr("PLY (*.ply)"));
-  add_export(tr("Mesh (STL)…"), Export::MeshStl, tr("STL (*.stl)"));
-  add_export(tr("3D view (PNG)…"), Export::ViewPng, tr("PNG (*.png)"));
+  add_export(tr("Surface points (PLY)…"), Export::SurfacePly, tr("PLY"), ".ply");
+  add_export(tr("Map (OctoMap .bt)…"), Export::MapBt, tr("OctoMap"), ".bt");
+  add_export(tr("Mesh (PLY)…"), Export::MeshPly, tr("PLY"), ".ply");
+  add_export(tr("Mesh (STL)…"), Export::MeshStl, tr("STL"), ".stl");
+  add_export(tr("3D view (PNG)…"), Export::ViewPng, tr("PNG"), ".png");
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -228,8 +238,17 @@ void MainWindow::buildMenus() {
   follow_action_->setCheckable(true);
   follow_action_->setChecked(true);
 
+  QMenu* frames = menuBar()->addMenu(tr("F&rames"));
+  frames->addAction(tr("&Play / pause"), QKeySequence(Qt::Key_Space), this,
+                    [this] { timeline_->setPlaying(!timeline_->playing()); });
+  frames->addAction(tr("&Next frame"), QKeySequence(Qt::Key_Right), timeline_,
+                    &widgets::FrameTimeline::stepForward);
+  frames->addAction(tr("P&revious frame"), QKeySequence(Qt::Key_Left), timeline_,
+                    &widgets::FrameTimeline::stepBack);
+
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  view->addAction(tr("&Fit"), this, [this] { map_view_->fitCamera(); });
+  view->addAction(tr("&Fit (reset the view)"), QKeySequence(Qt::Key_Home), this,
+                  [this] { map_view_->fitCamera(); });
   view->addAction(tr("&Top"), this, [this] { map_view_->viewFromTop(); });
   view->addAction(tr("&Side"), this, [this] { map_view_->viewFromSide(); });
   QAction* grey = view->addAction(tr("&Grey sonar images"));
@@ -242,6 +261,26 @@ void MainWindow::buildMenus() {
   QAction* ortho = view->addAction(tr("&Orthographic"));
   ortho->setCheckable(true);
   connect(ortho, &QAction::toggled, this, [this](bool on) { map_view_->setOrthographic(on); });
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&User guide"), QKeySequence::HelpContents, this, [this] {
+    const QString guide = userGuideFile();
+    if (guide.isEmpty() || !QDesktopServices::openUrl(QUrl::fromLocalFile(guide))) {
+      showError(tr("User guide"),
+                tr("The user guide was not found beside the program (share/doc/sonarcarve). It "
+                   "is docs/user-guide/README.md in SonarCarve's sources."));
+    }
+  });
+  help->addAction(tr("&Keyboard shortcuts"), this, [this] {
+    QMessageBox::information(this, tr("Keyboard shortcuts"), shortcutList(*menuBar()));
+  });
+  help->addAction(tr("&About SonarCarve"), this, [this] {
+    QMessageBox::about(this, tr("About SonarCarve"),
+                       tr("SonarCarve %1\n3D maps of underwater structures from 2D imaging "
+                          "sonar logs and navigation (space carving, after Guerneve and "
+                          "Petillot 2015).")
+                           .arg(QCoreApplication::applicationVersion()));
+  });
 }
 
 void MainWindow::buildToolbar() {

@@ -3,6 +3,7 @@
 // running job; a broken mission gives a message and the window stays usable; sessions and
 // exports round-trip.
 #include <QDoubleSpinBox>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -10,6 +11,8 @@
 #include <functional>
 #include <set>
 
+#include "frame_timeline.h"
+#include "gui_conventions.h"
 #include "io/point_cloud_ply.h"
 #include "io/session_file.h"
 #include "main_window.h"
@@ -339,6 +342,42 @@ class WorkbenchTest : public QObject {
     QCOMPARE(imported.back().front().toBool(), false);
     QVERIFY(window.logText().contains("junk.raw"));
     QCOMPARE(window.mission()->frames.size(), std::size_t{1});  // the open mission stays
+  }
+
+  // Keys drive the frames and the view; the Help menu lists every shortcut from the menus.
+  void keysDriveTheFramesAndTheHelpListsThem() {
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QVERIFY(waitForResult(window, 120000));  // the run no longer moves the timeline
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    window.timeline().setCurrentFrame(3);
+    QTest::keyClick(&window, Qt::Key_Right);
+    QCOMPARE(window.timeline().currentFrame(), 4);
+    QTest::keyClick(&window, Qt::Key_Left);
+    QTest::keyClick(&window, Qt::Key_Left);
+    QCOMPARE(window.timeline().currentFrame(), 2);
+    QTest::keyClick(&window, Qt::Key_Space);
+    QVERIFY(window.timeline().playing());
+    QTest::keyClick(&window, Qt::Key_Space);
+    QVERIFY(!window.timeline().playing());
+    const QString shortcuts = sonarcarve::gui::shortcutList(*window.menuBar());
+    for (const char* line : {"Frames > Play / pause: Space", "Frames > Next frame: Right",
+                             "Run > Start: F5", "View > Fit (reset the view): Home",
+                             "Help > User guide: F1", "File > Save session: Ctrl+S"}) {
+      QVERIFY2(shortcuts.contains(line), qPrintable(shortcuts));
+    }
+  }
+
+  // What a save dialog returns gets the extension of what it saves, unless it has it.
+  void saveDialogNamesGetTheirExtension() {
+    using sonarcarve::gui::withSuffix;
+    QCOMPARE(withSuffix("/data/riser", ".ply"), QString("/data/riser.ply"));
+    QCOMPARE(withSuffix("/data/riser.PLY", ".ply"), QString("/data/riser.PLY"));
+    QCOMPARE(withSuffix("/data/riser.v2", ".stl"), QString("/data/riser.v2.stl"));
+    QCOMPARE(withSuffix("params.yml", ".yaml", {".yml"}), QString("params.yml"));
+    QCOMPARE(withSuffix("", ".sonarcarve"), QString());  // a cancelled dialog stays cancelled
   }
 
   void cleanupTestCase() { scratch_.reset(); }
