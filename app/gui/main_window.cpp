@@ -219,7 +219,7 @@ void MainWindow::buildMenus() {
 
   QMenu* run = menuBar()->addMenu(tr("&Run"));
   run_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Start"), this,
-                               &MainWindow::startRun);
+                               &MainWindow::playRun);
   run_action_->setShortcut(Qt::Key_F5);
   pause_action_ = run->addAction(style()->standardIcon(QStyle::SP_MediaPause), tr("&Pause"));
   pause_action_->setCheckable(true);
@@ -615,6 +615,14 @@ void MainWindow::startRun() {
   updateRunActions();
 }
 
+void MainWindow::playRun() {
+  if (runner_->running() && runner_->paused()) {
+    setPaused(false);  // Play after Pause resumes where the run was held
+    return;
+  }
+  startRun();
+}
+
 void MainWindow::cancelRun() {
   if (!runner_->running()) {
     return;
@@ -628,13 +636,18 @@ void MainWindow::cancelRun() {
 
 void MainWindow::setPaused(bool paused) {
   runner_->setPaused(paused);
+  {
+    const QSignalBlocker block(pause_action_);
+    pause_action_->setChecked(paused);
+  }
   progress_label_->setText(paused ? tr("Paused") : tr("carving…"));
+  updateRunActions();
 }
 
 void MainWindow::updateRunActions() {
   const bool running = runner_->running();
   run_action_->setEnabled(mission_ != nullptr);
-  run_action_->setText(running ? tr("Restart") : tr("Start"));
+  run_action_->setText(!running ? tr("Start") : runner_->paused() ? tr("Resume") : tr("Restart"));
   pause_action_->setEnabled(running);
   cancel_action_->setEnabled(running);
 }

@@ -72,8 +72,10 @@ class MainWindow : public QMainWindow {
   void setParams(const ReconstructionParams& params);
   void setColourBy(widgets::MapView::ColourBy by);
 
-  // Run control.
+  // Run control. startRun() starts a new run (superseding one that goes); playRun(), the Run
+  // action and the toolbar's Play, resumes a paused run and starts one otherwise.
   void startRun();
+  void playRun();
   void cancelRun();
   void setPaused(bool paused);
 

@@ -370,6 +370,26 @@ class WorkbenchTest : public QObject {
     }
   }
 
+  // Play after Pause resumes the held run where it was; it does not start it again.
+  void playAfterPauseResumes() {
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QSignalSpy carved(&window.runner(), &sonarcarve::gui::ReconstructionRunner::frameCarved);
+    QVERIFY(carved.wait(60000));
+    window.setPaused(true);
+    QTest::qWait(200);
+    const int job = window.runner().currentJob();
+    const auto held = carved.count();
+    window.playRun();  // the toolbar's Play (Run > Resume)
+    QVERIFY(!window.runner().paused());
+    QCOMPARE(window.runner().currentJob(), job);
+    QVERIFY(waitForResult(window, 120000));
+    // Resumed: the frames carved before the pause are not carved again.
+    QCOMPARE(static_cast<std::size_t>(carved.count()), std::size_t{24});
+    QVERIFY(held >= 1);
+  }
+
   // What a save dialog returns gets the extension of what it saves, unless it has it.
   void saveDialogNamesGetTheirExtension() {
     using sonarcarve::gui::withSuffix;
