@@ -110,9 +110,9 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
 void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto* cmd = app.add_subcommand("simulate", "Simulate a sonar mission with ground truth");
   auto o = std::make_shared<SimulateOptions>();
-  cmd->add_option(
-         "--scene", o->scene,
-         "riser | jacket-node | seabed-objects | manifold | mesh file (STL, OBJ, PLY) in world NED metres")
+  cmd->add_option("--scene", o->scene,
+                  "riser | jacket-node | seabed-objects | manifold | mesh file (STL, OBJ, PLY) in "
+                  "world NED metres")
       ->required();
   cmd->add_option("--trajectory", o->trajectory,
                   "vertical | orbit | lawnmower | navigation CSV of vehicle poses; auto picks the "

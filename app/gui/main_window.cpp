@@ -301,6 +301,8 @@ void MainWindow::buildToolbar() {
   bar->addWidget(layer_);
   connect(layer_, &QComboBox::currentIndexChanged, this,
           [this](int i) { map_view_->setLayer(static_cast<widgets::MapView::Layer>(i)); });
+  connect(layer_, &QComboBox::activated, this,
+          [this](int i) { chooseLayer(static_cast<widgets::MapView::Layer>(i)); });
   bar->addWidget(new QLabel(tr(" Colour by ")));
   colour_by_ = new QComboBox;
   colour_by_->addItems({tr("intensity"), tr("depth"), tr("error vs ground truth")});
@@ -347,10 +349,13 @@ void MainWindow::wireRunner() {
             }
             surface.errors_m = surface_errors_m;
             map_view_->setSurface(std::move(surface));
-            if (layer_->currentIndex() == 0 && !result->surface.empty()) {
-              layer_->setCurrentIndex(1);  // the run's product: its surface
-              map_view_->fitCamera();
+            if (!result->surface.empty()) {
+              layer_->setCurrentIndex(preferred_layer_);  // the surface, or the user's choice
+              if (!view_settled_) {
+                map_view_->fitCamera();
+              }
             }
+            view_settled_ = true;
             progress_bar_->setFormat(tr("done"));
             const QString summary =
                 tr("done: %1 frames, %2 occupied voxels, %3 surface points, %4 mesh triangles, "
@@ -440,6 +445,7 @@ bool MainWindow::openMission(const QString& path) {
   }
   runner_->cancel();
   mission_ = mission;
+  view_settled_ = false;
   result_.reset();
   truth_.reset();
   const auto truth_file = mission_->folder / "ground_truth.ply";
@@ -599,7 +605,12 @@ void MainWindow::startRun() {
     return;
   }
   run_params_ = params;
+  // A re-run keeps the user's camera and frame; the map being carved shows until it ends.
+  const CameraState camera = map_view_->cameraState();
   map_view_->clearMap();
+  if (view_settled_) {
+    map_view_->setCameraState(camera);
+  }
   layer_->setCurrentIndex(0);
   result_.reset();
   latest_carved_frame_ = -1;
@@ -609,10 +620,17 @@ void MainWindow::startRun() {
     pause_action_->setChecked(false);
   }
   runner_->start({mission_, params, truth_});
-  follow_timer_.start();
+  if (!view_settled_) {
+    follow_timer_.start();  // the frame view follows the carving on a mission's first run
+  }
   progress_bar_->setValue(0);
   progress_label_->setText(tr("carving…"));
   updateRunActions();
+}
+
+void MainWindow::chooseLayer(widgets::MapView::Layer layer) {
+  preferred_layer_ = static_cast<int>(layer);
+  layer_->setCurrentIndex(preferred_layer_);
 }
 
 void MainWindow::playRun() {
@@ -736,6 +754,7 @@ bool MainWindow::openSession(const QString& file) {
     return false;
   }
   map_view_->setCameraState(s.camera);
+  view_settled_ = true;  // the session's view, kept by the run it starts
   setColourBy(widgets::MapView::colourByNamed(s.colour_by));
   timeline_->setCurrentFrame(s.frame);
   follow_action_->setChecked(false);  // keep the saved frame in view

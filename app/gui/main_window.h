@@ -71,6 +71,8 @@ class MainWindow : public QMainWindow {
   bool exportTo(Export kind, const QString& file);
   void setParams(const ReconstructionParams& params);
   void setColourBy(widgets::MapView::ColourBy by);
+  /// What the 3D view shows once a run ends (the user's choice in Show; default the surface).
+  void chooseLayer(widgets::MapView::Layer layer);
 
   // Run control. startRun() starts a new run (superseding one that goes); playRun(), the Run
   // action and the toolbar's Play, resumes a paused run and starts one otherwise.
@@ -152,6 +154,10 @@ class MainWindow : public QMainWindow {
   QAction* follow_action_ = nullptr;
   QTimer follow_timer_;
   long latest_carved_frame_ = -1;
+  // The mission's view is the user's (a run has ended, or a session set it): re-runs keep the
+  // camera, the frame and the layer.
+  bool view_settled_ = false;
+  int preferred_layer_ = static_cast<int>(widgets::MapView::Layer::Surface);
   std::chrono::steady_clock::time_point run_started_;
   // Off the GUI thread: reading a noise model, reading and denoising the frame shown, and
   // importing a vendor log (with its progress dialog).

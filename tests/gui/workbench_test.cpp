@@ -390,6 +390,27 @@ class WorkbenchTest : public QObject {
     QVERIFY(held >= 1);
   }
 
+  // A re-run (a parameter changed) keeps what the user set: the camera, the frame shown and
+  // the layer chosen.
+  void rerunKeepsTheCameraTheFrameAndTheLayer() {
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QVERIFY(waitForResult(window, 120000));
+    QCOMPARE(window.mapView().layer(), sonarcarve::widgets::MapView::Layer::Surface);
+    window.chooseLayer(sonarcarve::widgets::MapView::Layer::Mesh);
+    sonarcarve::CameraState camera = window.mapView().cameraState();
+    camera.position += Eigen::Vector3d(1.0, -2.0, 0.5);
+    window.mapView().setCameraState(camera);
+    window.timeline().setCurrentFrame(5);
+    window.paramsPanel().voxelSize()->setValue(3.0);  // cm: a re-run
+    QVERIFY(waitForResult(window, 120000));
+    QCOMPARE(window.lastResult()->map->voxelSize(), 0.03);
+    QCOMPARE(window.mapView().layer(), sonarcarve::widgets::MapView::Layer::Mesh);
+    QVERIFY((window.mapView().cameraState().position - camera.position).norm() < 1e-9);
+    QCOMPARE(window.timeline().currentFrame(), 5);
+  }
+
   // What a save dialog returns gets the extension of what it saves, unless it has it.
   void saveDialogNamesGetTheirExtension() {
     using sonarcarve::gui::withSuffix;
