@@ -13,6 +13,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
+#include <QLabel>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -74,6 +75,11 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(gl_);
+  caption_ = new QLabel(this);
+  caption_->setStyleSheet(
+      "QLabel { color: #ffe9a8; background: rgba(20, 24, 30, 200); padding: 3px 6px; }");
+  caption_->move(8, 8);
+  caption_->hide();
   vtkRenderer* renderer = gl_->renderer();
   renderer->SetBackground(0.09, 0.11, 0.14);
   renderer->SetBackground2(0.22, 0.26, 0.31);
@@ -113,6 +119,17 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
 }
 
 MapView::~MapView() = default;
+
+void MapView::setCaption(const QString& text) {
+  caption_->setText(text);
+  caption_->adjustSize();
+  caption_->setVisible(!text.isEmpty());
+  caption_->raise();
+}
+
+QString MapView::caption() const {
+  return caption_->text();
+}
 
 void MapView::clearMap() {
   blocks_.clear();

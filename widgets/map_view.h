@@ -21,6 +21,7 @@
 
 class vtkActor;
 class vtkPolyData;
+class QLabel;
 
 namespace sonarcarve::widgets {
 
@@ -66,6 +67,10 @@ class MapView : public QWidget {
   void setSurface(MapViewBlock surface);
   void setLayer(Layer layer);
   Layer layer() const { return layer_; }
+  /// A line over the view's top-left corner saying what the map is (provisional while carving,
+  /// cancelled, failed); empty hides it.
+  void setCaption(const QString& text);
+  QString caption() const;
   bool hasErrors() const { return has_errors_; }
 
   void setColourBy(ColourBy by);
@@ -106,6 +111,7 @@ class MapView : public QWidget {
   void render();
 
   VtkGlWidget* gl_ = nullptr;
+  QLabel* caption_ = nullptr;
   std::map<std::size_t, MapViewBlock> blocks_;
   MapViewBlock surface_;
   Layer layer_ = Layer::Map;

@@ -340,6 +340,7 @@ void MainWindow::wireRunner() {
                  const std::vector<float>& surface_errors_m) {
             result_ = result;
             follow_timer_.stop();
+            map_view_->setCaption({});
             map_view_->flush();
             map_view_->setMesh(result->mesh);
             widgets::MapViewBlock surface;
@@ -384,6 +385,7 @@ void MainWindow::wireRunner() {
   connect(runner_.get(), &ReconstructionRunner::failed, this, [this](int, const QString& message) {
     follow_timer_.stop();
     progress_label_->setText(tr("Reconstruction failed"));
+    map_view_->setCaption(tr("Failed: what was carved before the error, not a result"));
     showError(tr("Reconstruction failed"), message);
     updateRunActions();
     emit runFailed(message);
@@ -620,6 +622,9 @@ void MainWindow::startRun() {
     pause_action_->setChecked(false);
   }
   runner_->start({mission_, params, truth_});
+  map_view_->setCaption(
+      tr("Carving: provisional, voxels may yet be carved away (ghosts in the beam's tails go "
+         "as more views arrive)"));
   if (!view_settled_) {
     follow_timer_.start();  // the frame view follows the carving on a mission's first run
   }
@@ -647,7 +652,12 @@ void MainWindow::cancelRun() {
   }
   runner_->cancel();
   follow_timer_.stop();
+  {
+    const QSignalBlocker block(pause_action_);
+    pause_action_->setChecked(false);
+  }
   log(tr("cancelled: the map shows what was carved so far"));
+  map_view_->setCaption(tr("Cancelled: the map carved so far, not a finished result"));
   progress_label_->setText(tr("Cancelled"));
   updateRunActions();
 }

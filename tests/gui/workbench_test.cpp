@@ -127,14 +127,17 @@ class WorkbenchTest : public QObject {
     const int reports = static_cast<int>(progressed.count());
     QTest::qWait(300);
     QCOMPARE(static_cast<int>(progressed.count()), reports);  // held while paused
+    QVERIFY(window.mapView().caption().contains("provisional"));
     window.cancelRun();
     QVERIFY(!window.runner().running());
     QVERIFY(!window.lastResult());
+    QVERIFY(window.mapView().caption().startsWith("Cancelled"));
     window.startRun();
     const auto result = waitForResult(window, 120000);
     QVERIFY(result);
     QVERIFY(!result->cancelled);
     QCOMPARE(result->frames_used, std::size_t{24});
+    QVERIFY(window.mapView().caption().isEmpty());  // a finished result is the map itself
   }
 
   // Changing a parameter while a run is going cancels it and runs again with the new value:
