@@ -11,6 +11,7 @@
 
 #include "desktop_integration.h"
 #include "frame_timeline.h"
+#include "io/session_file.h"
 #include "main_window.h"
 #include "map_view.h"
 #include "params_panel.h"
@@ -89,7 +90,9 @@ int main(int argc, char** argv) {
   if (!args.isEmpty()) {
     const QString path = args.front();
     const bool opened =
-        path.endsWith(".sonarcarve") ? window.openSession(path) : window.openMission(path);
+        path.endsWith(".sonarcarve") || sonarcarve::looksLikeSessionFile(path.toStdString())
+            ? window.openSession(path)
+            : window.openMission(path);
     if (!opened && quit_when_done) {
       return 1;
     }

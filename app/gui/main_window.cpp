@@ -883,7 +883,7 @@ void MainWindow::importLog(const ImportRequest& request) {
 }
 
 void MainWindow::openPath(const QString& path) {
-  if (path.endsWith(".sonarcarve")) {
+  if (path.endsWith(".sonarcarve") || looksLikeSessionFile(path.toStdString())) {
     openSession(path);
   } else {
     openMission(path);

@@ -2,6 +2,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <fstream>
+
 #include "common/error.h"
 #include "io/atomic_file.h"
 #include "io/yaml_fields.h"
@@ -85,6 +88,18 @@ Session loadSession(const std::filesystem::path& file) {
     s.params = ReconstructionParams::fromYamlNode(params, file.string());
   }
   return s;
+}
+
+bool looksLikeSessionFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return head.find(std::string("format: ") + kFormat) != std::string::npos;
 }
 
 }  // namespace sonarcarve

@@ -30,5 +30,8 @@ struct Session {
 void saveSession(const Session& session, const std::filesystem::path& file);
 /// Throws Error naming the file, line and key on a missing or bad value.
 Session loadSession(const std::filesystem::path& file);
+/// True if `path` is a file that says it is a session (`format: sonarcarve-session` in its
+/// first 4 KB), whatever its name. Never throws.
+bool looksLikeSessionFile(const std::filesystem::path& path);
 
 }  // namespace sonarcarve
