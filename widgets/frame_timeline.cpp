@@ -89,15 +89,21 @@ void FrameTimeline::setPlaying(bool on) {
       style()->standardIcon(play_timer_.isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
 }
 
+QString FrameTimeline::labelText() const {
+  return label_->text();
+}
+
 void FrameTimeline::updateLabel() {
   if (times_s_.empty()) {
     label_->setText(tr("no frames"));
     return;
   }
   const int i = slider_->value();
-  label_->setText(tr("frame %1 / %2   t = %3 s")
+  // Counted from 1 for people, with the index that `frame --index` and sessions use.
+  label_->setText(tr("frame %1 of %2 (index %3)   t = %4 s")
+                      .arg(i + 1)
+                      .arg(times_s_.size())
                       .arg(i)
-                      .arg(times_s_.size() - 1)
                       .arg(times_s_[static_cast<std::size_t>(i)], 0, 'f', 2));
 }
 

@@ -23,6 +23,8 @@ class FrameTimeline : public QWidget {
   void setFrameTimes(std::vector<double> times_s);
   int currentFrame() const;
   bool playing() const { return play_timer_.isActive(); }
+  /// What the label says: "frame 1 of 24 (index 0)   t = 100.00 s".
+  QString labelText() const;
 
  public slots:
   void setCurrentFrame(int index);

@@ -314,16 +314,28 @@ void MainWindow::buildToolbar() {
 void MainWindow::wireRunner() {
   connect(runner_.get(), &ReconstructionRunner::progressed, this,
           [this](int, const QString& stage, qulonglong done, qulonglong total) {
-            progress_bar_->setMaximum(static_cast<int>(total));
+            // A stage that reports no steps (the mesh: 0 of 1 until it ends) shows as busy.
+            const bool busy = total <= 1 && done == 0;
+            progress_bar_->setMaximum(busy ? 0 : static_cast<int>(total));
             progress_bar_->setValue(static_cast<int>(done));
             progress_bar_->setFormat(stage + " %v/%m");
-            QString text = tr("%1: %2 of %3").arg(stage).arg(done).arg(total);
-            if (stage == "carve" && done > 0) {
-              const double elapsed =
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - run_started_)
-                      .count();
-              const double left = elapsed * static_cast<double>(total - done) / done;
-              text += tr(" frames, about %1 s left").arg(left, 0, 'f', 0);
+            QString text =
+                busy ? tr("%1…").arg(stage) : tr("%1: %2 of %3").arg(stage).arg(done).arg(total);
+            if (stage == "carve") {
+              // Time left from the carving's own pace: the stages before it (noise model, keep
+              // level) are not frames.
+              const auto now = std::chrono::steady_clock::now();
+              if (carve_started_done_ < 0 || done < static_cast<qulonglong>(carve_started_done_)) {
+                carve_started_ = now;
+                carve_started_done_ = static_cast<long long>(done);
+              }
+              const auto carved = done - static_cast<qulonglong>(carve_started_done_);
+              if (carved > 0) {
+                const double elapsed = std::chrono::duration<double>(now - carve_started_).count();
+                const double left =
+                    elapsed * static_cast<double>(total - done) / static_cast<double>(carved);
+                text += tr(" frames, about %1 s left").arg(left, 0, 'f', 0);
+              }
             }
             progress_label_->setText(text);
           });
@@ -616,7 +628,7 @@ void MainWindow::startRun() {
   layer_->setCurrentIndex(0);
   result_.reset();
   latest_carved_frame_ = -1;
-  run_started_ = std::chrono::steady_clock::now();
+  carve_started_done_ = -1;
   {
     const QSignalBlocker block(pause_action_);
     pause_action_->setChecked(false);

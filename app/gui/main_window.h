@@ -158,7 +158,9 @@ class MainWindow : public QMainWindow {
   // camera, the frame and the layer.
   bool view_settled_ = false;
   int preferred_layer_ = static_cast<int>(widgets::MapView::Layer::Surface);
-  std::chrono::steady_clock::time_point run_started_;
+  // The first carve report of the run (frames done then; -1: none yet), for the time left.
+  std::chrono::steady_clock::time_point carve_started_;
+  long long carve_started_done_ = -1;
   // Off the GUI thread: reading a noise model, reading and denoising the frame shown, and
   // importing a vendor log (with its progress dialog).
   BackgroundJob noise_model_job_;

@@ -75,8 +75,11 @@ TEST_F(Widgets, TimelineStepsAndPlaysToTheLastFrame) {
   FrameTimeline timeline;
   QSignalSpy changed(&timeline, &FrameTimeline::currentFrameChanged);
   timeline.setFrameTimes({0.0, 0.5, 1.0, 1.5});
+  EXPECT_TRUE(timeline.labelText().startsWith("frame 1 of 4 (index 0)"))
+      << timeline.labelText().toStdString();
   timeline.stepForward();
   EXPECT_EQ(timeline.currentFrame(), 1);
+  EXPECT_TRUE(timeline.labelText().startsWith("frame 2 of 4 (index 1)   t = 0.50 s"));
   timeline.stepBack();
   timeline.stepBack();  // stays at the first frame
   EXPECT_EQ(timeline.currentFrame(), 0);
