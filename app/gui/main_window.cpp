@@ -56,6 +56,12 @@ QString describe(const std::exception& e) {
   return QString::fromStdString(e.what());
 }
 
+// Where the parameters of a mission's last run are remembered (QSettings).
+QString paramsKey(const std::filesystem::path& folder) {
+  return QStringLiteral("mission_params/") +
+         QString::fromStdString(folder.string()).toUtf8().toBase64(QByteArray::Base64UrlEncoding);
+}
+
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -446,6 +452,28 @@ OpenOptions optionsBeside(const std::filesystem::path& recording) {
 }  // namespace
 
 bool MainWindow::openMission(const QString& path) {
+  return openMissionWith(path, true);
+}
+
+void MainWindow::takeMissionParams() {
+  const QString key = paramsKey(mission_->folder);
+  const QString saved = QSettings().value(key).toString();
+  if (!saved.isEmpty()) {
+    try {
+      setParams(ReconstructionParams::fromYamlText(saved.toStdString(), "saved parameters"));
+      log(tr("parameters: this mission's own, from its last run here"));
+      return;
+    } catch (const std::exception& e) {
+      log(tr("parameters: this mission's saved ones are not readable (%1)").arg(describe(e)));
+    }
+  }
+  setParams(ReconstructionParams{});
+  log(
+      tr("parameters: the defaults (a mission opened after another does not take its "
+         "parameters or noise model)"));
+}
+
+bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   std::shared_ptr<const Mission> mission;
   try {
     mission = std::make_shared<const Mission>(
@@ -458,8 +486,12 @@ bool MainWindow::openMission(const QString& path) {
     return false;
   }
   runner_->cancel();
+  const bool another = mission_ && mission_->folder != mission->folder;
   mission_ = mission;
   view_settled_ = false;
+  if (another && own_params) {
+    takeMissionParams();
+  }
   result_.reset();
   truth_.reset();
   const auto truth_file = mission_->folder / "ground_truth.ply";
@@ -619,6 +651,7 @@ void MainWindow::startRun() {
     return;
   }
   run_params_ = params;
+  QSettings().setValue(paramsKey(mission_->folder), QString::fromStdString(params.toYaml()));
   // A re-run keeps the user's camera and frame; the map being carved shows until it ends.
   const CameraState camera = map_view_->cameraState();
   map_view_->clearMap();
@@ -772,7 +805,7 @@ bool MainWindow::openSession(const QString& file) {
     return false;
   }
   setParams(s.params);
-  if (!openMission(QString::fromStdString(s.mission))) {
+  if (!openMissionWith(QString::fromStdString(s.mission), false)) {
     return false;
   }
   map_view_->setCameraState(s.camera);

@@ -121,6 +121,10 @@ class MainWindow : public QMainWindow {
   void updateDetector();
   /// A session, a vendor log (through the import dialog) or a mission, by what `path` is.
   void openPath(const QString& path);
+  /// Opens a mission; `own_params`: a mission opened after another starts from the parameters
+  /// of its own last run here, or the defaults (never the other mission's noise model).
+  bool openMissionWith(const QString& path, bool own_params);
+  void takeMissionParams();
   void addRecent(const QString& path);
   void fillRecentMenu();
   void updateRunActions();

@@ -5,6 +5,7 @@
 #include <QDoubleSpinBox>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QtTest>
@@ -412,6 +413,33 @@ class WorkbenchTest : public QObject {
     QCOMPARE(window.mapView().layer(), sonarcarve::widgets::MapView::Layer::Mesh);
     QVERIFY((window.mapView().cameraState().position - camera.position).norm() < 1e-9);
     QCOMPARE(window.timeline().currentFrame(), 5);
+  }
+
+  // A mission opened after another starts from its own last parameters or the defaults (the
+  // noise model among them), and says so.
+  void aSecondMissionStartsFromItsOwnParameters() {
+    QSettings().remove("mission_params");
+    MainWindow window;
+    window.show();
+    sonarcarve::ReconstructionParams tuned;
+    tuned.carve.voxel_size_m = 0.035;
+    window.setParams(tuned);  // the first mission opened takes the parameters as set
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QVERIFY(waitForResult(window, 120000));
+    QCOMPARE(window.lastResult()->map->voxelSize(), 0.035);
+
+    QVERIFY(
+        window.openMission(QString::fromStdString(sonarcarve::test::exampleMission().string())));
+    QCOMPARE(window.paramsPanel().params().carve.voxel_size_m,
+             sonarcarve::ReconstructionParams{}.carve.voxel_size_m);
+    QVERIFY(window.paramsPanel().params().noise_model.empty());
+    QVERIFY(window.logText().contains("parameters: the defaults"));
+    QVERIFY(waitForResult(window, 120000));
+
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QCOMPARE(window.paramsPanel().params().carve.voxel_size_m, 0.035);
+    QVERIFY(window.logText().contains("parameters: this mission's own"));
+    QVERIFY(waitForResult(window, 120000));
   }
 
   // What a save dialog returns gets the extension of what it saves, unless it has it.
