@@ -21,6 +21,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
+#include <QStandardItemModel>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTime>
@@ -103,6 +104,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildDocks();
   buildMenus();
   buildToolbar();
+  updateColourChoices();
   wireRunner();
 
   connect(timeline_, &widgets::FrameTimeline::currentFrameChanged, this, &MainWindow::showFrame);
@@ -503,6 +505,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
       log(tr("ground truth not used: %1").arg(describe(e)));
     }
   }
+  updateColourChoices();
   for (const std::string& warning : mission_->warnings) {
     log(tr("note: %1").arg(QString::fromStdString(warning)));
   }
@@ -623,6 +626,23 @@ void MainWindow::drawFrame(const ShownFrame& shown) {
 void MainWindow::setParams(const ReconstructionParams& params) {
   params_panel_->setParams(params);
   updateDetector();
+}
+
+void MainWindow::updateColourChoices() {
+  auto* model = qobject_cast<QStandardItemModel*>(colour_by_->model());
+  QStandardItem* error = model->item(static_cast<int>(widgets::MapView::ColourBy::Error));
+  error->setEnabled(truth_ != nullptr);
+  error->setToolTip(
+      truth_ ? QString() : tr("needs the mission's ground truth (ground_truth.ply in its folder)"));
+  if (!truth_ &&
+      colour_by_->currentIndex() == static_cast<int>(widgets::MapView::ColourBy::Error)) {
+    colour_by_->setCurrentIndex(static_cast<int>(widgets::MapView::ColourBy::Intensity));
+  }
+}
+
+bool MainWindow::errorColouringAvailable() const {
+  const auto* model = qobject_cast<const QStandardItemModel*>(colour_by_->model());
+  return model->item(static_cast<int>(widgets::MapView::ColourBy::Error))->isEnabled();
 }
 
 void MainWindow::setColourBy(widgets::MapView::ColourBy by) {

@@ -71,6 +71,8 @@ class MainWindow : public QMainWindow {
   bool exportTo(Export kind, const QString& file);
   void setParams(const ReconstructionParams& params);
   void setColourBy(widgets::MapView::ColourBy by);
+  /// Colouring by error is offered only when the mission has its ground truth.
+  bool errorColouringAvailable() const;
   /// What the 3D view shows once a run ends (the user's choice in Show; default the surface).
   void chooseLayer(widgets::MapView::Layer layer);
 
@@ -125,6 +127,7 @@ class MainWindow : public QMainWindow {
   /// of its own last run here, or the defaults (never the other mission's noise model).
   bool openMissionWith(const QString& path, bool own_params);
   void takeMissionParams();
+  void updateColourChoices();
   void addRecent(const QString& path);
   void fillRecentMenu();
   void updateRunActions();
