@@ -6,6 +6,7 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDesktopServices>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
@@ -185,6 +186,21 @@ void MainWindow::buildMenus() {
                    ".sonarcarve");
     if (!f.isEmpty()) {
       saveSession(f);
+    }
+  });
+  file->addAction(tr("Learn a &noise model from empty water…"), this, [this] {
+    const QString empty = QFileDialog::getExistingDirectory(
+        this, tr("A mission of empty water (the same sonar, no target)"));
+    if (empty.isEmpty()) {
+      return;
+    }
+    const QString out =
+        withSuffix(QFileDialog::getSaveFileName(this, tr("Save the noise model"),
+                                                QDir(empty).filePath("noise_model.yaml"),
+                                                tr("Noise models (*.yaml *.yml)")),
+                   ".yaml", {".yml"});
+    if (!out.isEmpty()) {
+      learnNoiseModel(empty, out);
     }
   });
   file->addSeparator();
@@ -891,6 +907,60 @@ void MainWindow::importWithDialog(const QString& log) {
   } catch (const std::exception& e) {
     showError(tr("Cannot import"), describe(e));
   }
+}
+
+void MainWindow::learnNoiseModel(const QString& empty_water, const QString& out_file) {
+  auto* dialog = new QProgressDialog(
+      tr("Learning the noise model from %1…").arg(QFileInfo(empty_water).fileName()), tr("Cancel"),
+      0, 100, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->setMinimumDuration(500);
+  const QPointer<QProgressDialog> shown(dialog);
+  const std::filesystem::path in = empty_water.toStdString();
+  const std::filesystem::path out = out_file.toStdString();
+  const int smoothing = params_panel_->params().detector.smoothing;
+  log(tr("learning a noise model from %1 (smoothing %2)").arg(empty_water).arg(smoothing));
+  const int job = learn_job_.start(
+      [in, out, smoothing](JobContext& progress) {
+        const Mission empty = sonarcarve::openMission(in, OpenOptions{});
+        const NoiseModel model = NoiseModel::learn(empty, progress, nullptr, smoothing);
+        model.save(out);
+        return model.frames();
+      },
+      [this, shown, out_file](int frames) {
+        if (shown) {
+          shown->close();
+        }
+        log(tr("noise model of %1 empty-water frames written to %2").arg(frames).arg(out_file));
+        ReconstructionParams params = params_panel_->params();
+        params.noise_model = out_file.toStdString();
+        setParams(params);
+        if (mission_) {
+          paramsEdited();
+        }
+        emit noiseModelLearned(true);
+      },
+      [this, shown](const JobError& error) {
+        if (shown) {
+          shown->close();
+        }
+        if (error.cancelled) {
+          log(tr("learning the noise model cancelled: nothing written"));
+        } else {
+          showError(tr("Cannot learn the noise model"), error.message);
+        }
+        emit noiseModelLearned(false);
+      },
+      [shown](const QString&, std::size_t done, std::size_t total) {
+        if (shown) {
+          shown->setValue(total > 0 ? static_cast<int>(100 * done / total) : 0);
+        }
+      });
+  connect(dialog, &QProgressDialog::canceled, this, [this, job] {
+    if (learn_job_.currentJob() == job) {
+      learn_job_.cancel();
+    }
+  });
 }
 
 void MainWindow::importLog(const ImportRequest& request) {

@@ -63,6 +63,10 @@ class MainWindow : public QMainWindow {
   void importLog(const ImportRequest& request);
   /// Asks for the import's choices (navigation, mounting, time offset), then imports.
   void importWithDialog(const QString& log);
+  /// Learns a noise model from a recording of empty water (the same sonar, no target) on a
+  /// worker thread, with a cancellable progress dialog; writes it to `out_file`, makes it the
+  /// parameters' noise model and re-runs the open mission; emits noiseModelLearned(ok).
+  void learnNoiseModel(const QString& empty_water, const QString& out_file);
   bool saveSession(const QString& file);
   bool loadParams(const QString& file);
   bool saveParams(const QString& file);
@@ -96,6 +100,7 @@ class MainWindow : public QMainWindow {
   void runFinished(std::shared_ptr<const ReconstructionResult> result);
   void runFailed(const QString& message);
   void importFinished(bool ok);
+  void noiseModelLearned(bool ok);
 
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
@@ -173,6 +178,7 @@ class MainWindow : public QMainWindow {
   BackgroundJob noise_model_job_;
   BackgroundJob frame_job_;
   BackgroundJob import_job_;
+  BackgroundJob learn_job_;
   QPointer<QProgressDialog> import_dialog_;
 };
 

@@ -442,6 +442,46 @@ class WorkbenchTest : public QObject {
     QVERIFY(waitForResult(window, 120000));
   }
 
+  // File > Learn a noise model from empty water: learned on a worker, written, made the
+  // parameters' noise model, and the open mission re-runs with the Z-test on it.
+  void learnsANoiseModelFromEmptyWater() {
+    const fs::path empty = scratch_->path() / "empty";
+    sonarcarve::SimulationRequest request{sonarcarve::makeDemoScene("riser"),
+                                          "riser",
+                                          sonarcarve::test::paperSonar(),
+                                          sonarcarve::TrajectorySpec{},
+                                          {},
+                                          sonarcarve::NoiseSpec{},
+                                          sonarcarve::NavErrorSpec{},
+                                          true,
+                                          8,
+                                          empty};
+    sonarcarve::SilentProgress progress;
+    sonarcarve::ThreadPool pool;
+    sonarcarve::runSimulation(request, progress, pool);
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QVERIFY(waitForResult(window, 120000));
+    QSignalSpy learned(&window, &MainWindow::noiseModelLearned);
+    const fs::path model = scratch_->path() / "empty_noise.yaml";
+    window.learnNoiseModel(QString::fromStdString(empty.string()),
+                           QString::fromStdString(model.string()));
+    QVERIFY(learned.wait(60000));
+    QCOMPARE(learned.front().front().toBool(), true);
+    QVERIFY(fs::is_regular_file(model));
+    QCOMPARE(window.paramsPanel().params().noise_model, model.string());
+    const auto result = waitForResult(window, 120000);
+    QVERIFY(result);
+    QCOMPARE(QString::fromStdString(result->detector), QString("ztest"));
+    // A folder that is not a mission: a message naming it, nothing written.
+    window.learnNoiseModel(QString::fromStdString(scratch_->path().string()),
+                           QString::fromStdString((scratch_->path() / "none.yaml").string()));
+    QVERIFY(learned.wait(60000));
+    QCOMPARE(learned.back().front().toBool(), false);
+    QVERIFY(!fs::exists(scratch_->path() / "none.yaml"));
+  }
+
   // What a save dialog returns gets the extension of what it saves, unless it has it.
   void saveDialogNamesGetTheirExtension() {
     using sonarcarve::gui::withSuffix;
