@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 
+#include "colour_legend.h"
 #include "colour_maps.h"
 #include "vtk_gl_widget.h"
 
@@ -80,6 +81,8 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
       "QLabel { color: #ffe9a8; background: rgba(20, 24, 30, 200); padding: 3px 6px; }");
   caption_->move(8, 8);
   caption_->hide();
+  legend_ = new ColourLegend(this);
+  legend_->hide();
   vtkRenderer* renderer = gl_->renderer();
   renderer->SetBackground(0.09, 0.11, 0.14);
   renderer->SetBackground2(0.22, 0.26, 0.31);
@@ -288,6 +291,43 @@ void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& 
   mapper->SetLookupTable(lookupTable(colours.data(), static_cast<int>(colours.size())));
   mapper->SetScalarRange(range[0], std::max(range[1], range[0] + 1e-6));
   mapper->ScalarVisibilityOn();
+  layer.coloured_by = by;
+  layer.low = range[0];
+  layer.high = std::max(range[1], range[0] + 1e-6);
+}
+
+void MapView::updateLegend() {
+  const PointLayer* shown = layer_ == Layer::Map       ? &map_layer_
+                            : layer_ == Layer::Surface ? &surface_layer_
+                                                       : nullptr;
+  if (shown == nullptr || shown->poly->GetNumberOfPoints() == 0) {
+    legend_->hide();
+    return;
+  }
+  switch (shown->coloured_by) {
+    case ColourBy::Depth:
+      legend_->setScale(tr("depth (m)"), shown->low, shown->high, viridisColours());
+      break;
+    case ColourBy::Error:
+      legend_->setScale(tr("error vs ground truth (cm)"), 100.0 * shown->low, 100.0 * shown->high,
+                        errorColours());
+      break;
+    case ColourBy::Intensity:
+      legend_->setScale(tr("intensity (counts)"), shown->low, shown->high, viridisColours());
+      break;
+  }
+  legend_->move(8, height() - legend_->height() - 8);
+  legend_->show();
+  legend_->raise();
+}
+
+void MapView::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  updateLegend();
+}
+
+QString MapView::legendText() const {
+  return legend_->isVisibleTo(this) ? legend_->text() : QString();
 }
 
 const char* MapView::nameOf(ColourBy by) {
@@ -500,6 +540,7 @@ QImage MapView::grabImage() {
 }
 
 void MapView::render() {
+  updateLegend();
   gl_->renderer()->ResetCameraClippingRange();
   gl_->requestRender();
 }

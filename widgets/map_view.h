@@ -25,6 +25,7 @@ class QLabel;
 
 namespace sonarcarve::widgets {
 
+class ColourLegend;
 class VtkGlWidget;
 
 /// One block of the map as the viewer receives it (a block with no points has become empty).
@@ -71,6 +72,9 @@ class MapView : public QWidget {
   /// cancelled, failed); empty hides it.
   void setCaption(const QString& text);
   QString caption() const;
+  /// The colour key of the layer shown ("depth (m): 9.65 to 11.29"); empty when it is hidden
+  /// (the mesh, or nothing drawn yet).
+  QString legendText() const;
   bool hasErrors() const { return has_errors_; }
 
   void setColourBy(ColourBy by);
@@ -99,7 +103,13 @@ class MapView : public QWidget {
     vtkSmartPointer<vtkPolyData> poly;
     vtkSmartPointer<vtkActor> actor;
     std::size_t stride = 1;  ///< every stride-th point is drawn
+    // The colour scale as last drawn: what the values are and the table's ends.
+    ColourBy coloured_by = ColourBy::Intensity;
+    double low = 0.0;
+    double high = 1.0;
   };
+  void updateLegend();
+  void resizeEvent(QResizeEvent* event) override;
   void redraw();
   void recolour();
   void fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
@@ -112,6 +122,7 @@ class MapView : public QWidget {
 
   VtkGlWidget* gl_ = nullptr;
   QLabel* caption_ = nullptr;
+  ColourLegend* legend_ = nullptr;
   std::map<std::size_t, MapViewBlock> blocks_;
   MapViewBlock surface_;
   Layer layer_ = Layer::Map;

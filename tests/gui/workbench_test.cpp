@@ -482,6 +482,29 @@ class WorkbenchTest : public QObject {
     QVERIFY(!fs::exists(scratch_->path() / "none.yaml"));
   }
 
+  // The 3D view's colour key names the quantity and its unit, with the values at its ends.
+  void legendNamesTheColoursAndTheirUnits() {
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    const auto result = waitForResult(window, 120000);
+    QVERIFY(result && !result->surface.empty());
+    QVERIFY(window.mapView().legendText().startsWith("intensity (counts): 0 to "));
+    window.setColourBy(sonarcarve::widgets::MapView::ColourBy::Depth);
+    double shallow = 1e9, deep = -1e9;
+    for (const auto& p : result->surface) {
+      shallow = std::min(shallow, static_cast<double>(p.position_m.z()));
+      deep = std::max(deep, static_cast<double>(p.position_m.z()));
+    }
+    const QString depth =
+        QString("depth (m): %1 to %2").arg(shallow, 0, 'f', 2).arg(deep, 0, 'f', 2);
+    QCOMPARE(window.mapView().legendText(), depth);
+    window.setColourBy(sonarcarve::widgets::MapView::ColourBy::Error);
+    QCOMPARE(window.mapView().legendText(), QString("error vs ground truth (cm): 0.00 to 10.00"));
+    window.chooseLayer(sonarcarve::widgets::MapView::Layer::Mesh);
+    QVERIFY(window.mapView().legendText().isEmpty());  // the mesh is not coloured by a value
+  }
+
   // What a save dialog returns gets the extension of what it saves, unless it has it.
   void saveDialogNamesGetTheirExtension() {
     using sonarcarve::gui::withSuffix;
