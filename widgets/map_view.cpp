@@ -1,11 +1,13 @@
 #include "map_view.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkLookupTable.h>
+#include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -19,6 +21,7 @@
 #include <cmath>
 #include <limits>
 
+#include "axes_triad.h"
 #include "colour_legend.h"
 #include "colour_maps.h"
 #include "vtk_gl_widget.h"
@@ -83,7 +86,15 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   caption_->hide();
   legend_ = new ColourLegend(this);
   legend_->hide();
+  triad_ = new AxesTriad(this);
+  // The mouse turns the camera without going through render(): follow it at every render.
+  auto on_render = vtkSmartPointer<vtkCallbackCommand>::New();
+  on_render->SetClientData(this);
+  on_render->SetCallback([](vtkObject*, unsigned long, void* view, void*) {
+    static_cast<MapView*>(view)->updateTriad();
+  });
   vtkRenderer* renderer = gl_->renderer();
+  renderer->AddObserver(vtkCommand::StartEvent, on_render);
   renderer->SetBackground(0.09, 0.11, 0.14);
   renderer->SetBackground2(0.22, 0.26, 0.31);
   renderer->GradientBackgroundOn();
@@ -121,7 +132,9 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   viewFromSide();
 }
 
-MapView::~MapView() = default;
+MapView::~MapView() {
+  gl_->renderer()->RemoveObservers(vtkCommand::StartEvent);  // it would call back into this
+}
 
 void MapView::setCaption(const QString& text) {
   caption_->setText(text);
@@ -324,6 +337,24 @@ void MapView::updateLegend() {
 void MapView::resizeEvent(QResizeEvent* event) {
   QWidget::resizeEvent(event);
   updateLegend();
+  updateTriad();
+}
+
+void MapView::updateTriad() {
+  vtkMatrix4x4* view = gl_->renderer()->GetActiveCamera()->GetViewTransformMatrix();
+  std::array<QPointF, 3> axes;
+  for (int axis = 0; axis < 3; ++axis) {
+    // The world axis in the camera's frame (x right, y up): its screen direction, y down.
+    axes[static_cast<std::size_t>(axis)] =
+        QPointF(view->GetElement(0, axis), -view->GetElement(1, axis));
+  }
+  triad_->setAxes(axes);
+  triad_->move(width() - triad_->width() - 4, height() - triad_->height() - 4);
+  triad_->raise();
+}
+
+std::array<QPointF, 3> MapView::axesOnScreen() const {
+  return triad_->axes();
 }
 
 QString MapView::legendText() const {
@@ -541,6 +572,7 @@ QImage MapView::grabImage() {
 
 void MapView::render() {
   updateLegend();
+  updateTriad();
   gl_->renderer()->ResetCameraClippingRange();
   gl_->requestRender();
 }

@@ -8,8 +8,10 @@
 
 #include <vtkSmartPointer.h>
 #include <Eigen/Geometry>
+#include <QPointF>
 #include <QTimer>
 #include <QWidget>
+#include <array>
 #include <map>
 #include <opencv2/core.hpp>
 #include <string_view>
@@ -25,6 +27,7 @@ class QLabel;
 
 namespace sonarcarve::widgets {
 
+class AxesTriad;
 class ColourLegend;
 class VtkGlWidget;
 
@@ -75,6 +78,8 @@ class MapView : public QWidget {
   /// The colour key of the layer shown ("depth (m): 9.65 to 11.29"); empty when it is hidden
   /// (the mesh, or nothing drawn yet).
   QString legendText() const;
+  /// The north, east and down axes on the screen as the triad in the corner draws them.
+  std::array<QPointF, 3> axesOnScreen() const;
   bool hasErrors() const { return has_errors_; }
 
   void setColourBy(ColourBy by);
@@ -109,6 +114,7 @@ class MapView : public QWidget {
     double high = 1.0;
   };
   void updateLegend();
+  void updateTriad();
   void resizeEvent(QResizeEvent* event) override;
   void redraw();
   void recolour();
@@ -123,6 +129,7 @@ class MapView : public QWidget {
   VtkGlWidget* gl_ = nullptr;
   QLabel* caption_ = nullptr;
   ColourLegend* legend_ = nullptr;
+  AxesTriad* triad_ = nullptr;
   std::map<std::size_t, MapViewBlock> blocks_;
   MapViewBlock surface_;
   Layer layer_ = Layer::Map;

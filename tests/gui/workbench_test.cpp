@@ -482,8 +482,9 @@ class WorkbenchTest : public QObject {
     QVERIFY(!fs::exists(scratch_->path() / "none.yaml"));
   }
 
-  // The 3D view's colour key names the quantity and its unit, with the values at its ends.
-  void legendNamesTheColoursAndTheirUnits() {
+  // The 3D view's colour key names the quantity and its unit, with the values at its ends;
+  // the axes triad shows north, east and down as the camera sees them.
+  void legendAndAxesTriadNameWhatTheViewShows() {
     MainWindow window;
     window.show();
     QVERIFY(window.openMission(QString::fromStdString(mission().string())));
@@ -503,6 +504,16 @@ class WorkbenchTest : public QObject {
     QCOMPARE(window.mapView().legendText(), QString("error vs ground truth (cm): 0.00 to 10.00"));
     window.chooseLayer(sonarcarve::widgets::MapView::Layer::Mesh);
     QVERIFY(window.mapView().legendText().isEmpty());  // the mesh is not coloured by a value
+
+    // The axes triad: from the top, north is up and east right, down points away; from the
+    // south, down is down and east right, north points away.
+    const auto near = [](QPointF a, QPointF b) { return QLineF(a, b).length() < 1e-6; };
+    window.mapView().viewFromTop();
+    auto axes = window.mapView().axesOnScreen();
+    QVERIFY(near(axes[0], {0, -1}) && near(axes[1], {1, 0}) && near(axes[2], {0, 0}));
+    window.mapView().viewFromSide();
+    axes = window.mapView().axesOnScreen();
+    QVERIFY(near(axes[0], {0, 0}) && near(axes[1], {1, 0}) && near(axes[2], {0, 1}));
   }
 
   // What a save dialog returns gets the extension of what it saves, unless it has it.
