@@ -9,6 +9,7 @@
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
+#include <vtkPointPicker.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -87,6 +88,12 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   legend_ = new ColourLegend(this);
   legend_->hide();
   triad_ = new AxesTriad(this);
+  connect(gl_, &VtkGlWidget::clicked, this, [this](QPoint position) {
+    const QString text = pickAt(position);
+    if (!text.isEmpty()) {
+      emit pointPicked(text);
+    }
+  });
   // The mouse turns the camera without going through render(): follow it at every render.
   auto on_render = vtkSmartPointer<vtkCallbackCommand>::New();
   on_render->SetClientData(this);
@@ -351,6 +358,60 @@ void MapView::updateTriad() {
   triad_->setAxes(axes);
   triad_->move(width() - triad_->width() - 4, height() - triad_->height() - 4);
   triad_->raise();
+}
+
+QString MapView::pickAt(QPoint position, Eigen::Vector3d* ned) {
+  const PointLayer* shown = layer_ == Layer::Map       ? &map_layer_
+                            : layer_ == Layer::Surface ? &surface_layer_
+                                                       : nullptr;
+  if (shown == nullptr || shown->poly->GetNumberOfPoints() == 0) {
+    return {};
+  }
+  auto picker = vtkSmartPointer<vtkPointPicker>::New();
+  picker->SetTolerance(0.005);  // of the window's diagonal
+  picker->PickFromListOn();
+  picker->AddPickList(shown->actor);
+  const double ratio = gl_->devicePixelRatioF();
+  const double x = position.x() * ratio;
+  const double y = (gl_->height() - 1 - position.y()) * ratio;
+  if (picker->Pick(x, y, 0.0, gl_->renderer()) == 0 || picker->GetPointId() < 0) {
+    return {};
+  }
+  const vtkIdType id = picker->GetPointId();
+  double p[3];
+  shown->poly->GetPoint(id, p);
+  if (ned != nullptr) {
+    *ned = Eigen::Vector3d(p[0], p[1], p[2]);
+  }
+  const double value = shown->poly->GetPointData()->GetScalars()->GetComponent(id, 0);
+  QString what;
+  switch (shown->coloured_by) {
+    case ColourBy::Depth:
+      what = tr("depth %1 m").arg(value, 0, 'f', 2);
+      break;
+    case ColourBy::Error:
+      what = tr("error %1 cm").arg(100.0 * value, 0, 'f', 1);
+      break;
+    case ColourBy::Intensity:
+      what = tr("intensity %1 counts").arg(value, 0, 'f', 0);
+      break;
+  }
+  return tr("N %1 E %2 D %3 m, %4")
+      .arg(p[0], 0, 'f', 2)
+      .arg(p[1], 0, 'f', 2)
+      .arg(p[2], 0, 'f', 2)
+      .arg(what);
+}
+
+QPoint MapView::screenPositionOf(const Eigen::Vector3d& ned) const {
+  vtkRenderer* renderer = gl_->renderer();
+  renderer->SetWorldPoint(ned.x(), ned.y(), ned.z(), 1.0);
+  renderer->WorldToDisplay();
+  double d[3];
+  renderer->GetDisplayPoint(d);
+  const double ratio = gl_->devicePixelRatioF();
+  return {static_cast<int>(std::lround(d[0] / ratio)),
+          static_cast<int>(std::lround(gl_->height() - 1 - d[1] / ratio))};
 }
 
 std::array<QPointF, 3> MapView::axesOnScreen() const {

@@ -78,6 +78,12 @@ class MapView : public QWidget {
   /// The colour key of the layer shown ("depth (m): 9.65 to 11.29"); empty when it is hidden
   /// (the mesh, or nothing drawn yet).
   QString legendText() const;
+  /// The point of the layer shown (carved map or surface) under `position` in the widget:
+  /// "N 4.31 E -0.05 D 10.12 m, intensity 2345 counts", its world position in `ned`. Empty if
+  /// there is none (or the mesh is shown).
+  QString pickAt(QPoint position, Eigen::Vector3d* ned = nullptr);
+  /// Where a world point appears in the widget.
+  QPoint screenPositionOf(const Eigen::Vector3d& ned) const;
   /// The north, east and down axes on the screen as the triad in the corner draws them.
   std::array<QPointF, 3> axesOnScreen() const;
   bool hasErrors() const { return has_errors_; }
@@ -102,6 +108,8 @@ class MapView : public QWidget {
 
  signals:
   void redrawn(std::size_t points);
+  /// A click picked a point (pickAt's text).
+  void pointPicked(const QString& text);
 
  private:
   struct PointLayer {

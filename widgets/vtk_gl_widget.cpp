@@ -156,6 +156,9 @@ static unsigned long buttonEvent(Qt::MouseButton button, bool press) {
 }
 
 void VtkGlWidget::mousePressEvent(QMouseEvent* event) {
+  if (event->button() == Qt::LeftButton) {
+    press_position_ = event->position().toPoint();
+  }
   if (const unsigned long e = buttonEvent(event->button(), true)) {
     forwardMouse(event, e);
   }
@@ -164,6 +167,11 @@ void VtkGlWidget::mousePressEvent(QMouseEvent* event) {
 void VtkGlWidget::mouseReleaseEvent(QMouseEvent* event) {
   if (const unsigned long e = buttonEvent(event->button(), false)) {
     forwardMouse(event, e);
+  }
+  constexpr int kClickSlop_px = 4;
+  if (event->button() == Qt::LeftButton &&
+      (event->position().toPoint() - press_position_).manhattanLength() <= kClickSlop_px) {
+    emit clicked(press_position_);
   }
 }
 

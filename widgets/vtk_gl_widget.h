@@ -31,6 +31,11 @@ class VtkGlWidget : public QOpenGLWidget {
   /// Schedules a repaint (coalesced by Qt).
   void requestRender() { update(); }
 
+ signals:
+  /// The left button went down and up without the mouse moving (a click, not a drag), at
+  /// `position` in the widget.
+  void clicked(QPoint position);
+
  protected:
   void initializeGL() override;
   void paintGL() override;
@@ -48,6 +53,7 @@ class VtkGlWidget : public QOpenGLWidget {
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
   vtkSmartPointer<vtkRenderer> renderer_;
   bool painting_ = false;
+  QPoint press_position_;
 };
 
 }  // namespace sonarcarve::widgets

@@ -109,6 +109,10 @@ MainWindow::MainWindow(QWidget* parent)
   wireRunner();
 
   connect(timeline_, &widgets::FrameTimeline::currentFrameChanged, this, &MainWindow::showFrame);
+  connect(map_view_, &widgets::MapView::pointPicked, this, [this](const QString& text) {
+    statusBar()->showMessage(text);
+    log(tr("picked %1").arg(text));
+  });
   connect(params_panel_, &widgets::ParamsPanel::paramsEdited, this, &MainWindow::paramsEdited);
   for (auto* view : {raw_view_, denoised_view_}) {
     connect(view, &widgets::FanView::hovered, this,

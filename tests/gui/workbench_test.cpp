@@ -484,7 +484,7 @@ class WorkbenchTest : public QObject {
 
   // The 3D view's colour key names the quantity and its unit, with the values at its ends;
   // the axes triad shows north, east and down as the camera sees them.
-  void legendAndAxesTriadNameWhatTheViewShows() {
+  void legendTriadAndPickingTellWhatTheViewShows() {
     MainWindow window;
     window.show();
     QVERIFY(window.openMission(QString::fromStdString(mission().string())));
@@ -514,6 +514,26 @@ class WorkbenchTest : public QObject {
     window.mapView().viewFromSide();
     axes = window.mapView().axesOnScreen();
     QVERIFY(near(axes[0], {0, 0}) && near(axes[1], {1, 0}) && near(axes[2], {0, 1}));
+
+    // A click on a surface point picks it: its NED position and its value.
+    window.chooseLayer(sonarcarve::widgets::MapView::Layer::Surface);
+    window.setColourBy(sonarcarve::widgets::MapView::ColourBy::Intensity);
+    window.mapView().viewFromTop();
+    const Eigen::Vector3d target =
+        result->surface[result->surface.size() / 2].position_m.cast<double>();
+    const QPoint at = window.mapView().screenPositionOf(target);
+    Eigen::Vector3d picked;
+    const QString text = window.mapView().pickAt(at, &picked);
+    QVERIFY2(text.startsWith("N ") && text.contains(" m, intensity "), qPrintable(text));
+    // Seen from the top, the pick is the target's column: within the F-score's 5 cm.
+    QVERIFY((picked.head<2>() - target.head<2>()).norm() < 0.05);
+    auto* gl = window.mapView().findChild<sonarcarve::widgets::VtkGlWidget*>();
+    QVERIFY(gl);
+    QSignalSpy clicked(&window.mapView(), &sonarcarve::widgets::MapView::pointPicked);
+    QTest::mouseClick(gl, Qt::LeftButton, {}, at);
+    QCOMPARE(clicked.count(), 1);
+    QCOMPARE(clicked.front().front().toString(), text);
+    QVERIFY(window.logText().contains("picked N "));
   }
 
   // What a save dialog returns gets the extension of what it saves, unless it has it.
