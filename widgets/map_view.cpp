@@ -89,9 +89,11 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   legend_->hide();
   triad_ = new AxesTriad(this);
   connect(gl_, &VtkGlWidget::clicked, this, [this](QPoint position) {
-    const QString text = pickAt(position);
+    Eigen::Vector3d ned;
+    const QString text = pickAt(position, &ned);
     if (!text.isEmpty()) {
-      emit pointPicked(text);
+      emit pointPicked(text, QVector3D(static_cast<float>(ned.x()), static_cast<float>(ned.y()),
+                                       static_cast<float>(ned.z())));
     }
   });
   // The mouse turns the camera without going through render(): follow it at every render.

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <QPointF>
 #include <QTimer>
+#include <QVector3D>
 #include <QWidget>
 #include <array>
 #include <map>
@@ -108,8 +109,8 @@ class MapView : public QWidget {
 
  signals:
   void redrawn(std::size_t points);
-  /// A click picked a point (pickAt's text).
-  void pointPicked(const QString& text);
+  /// A click picked a point: pickAt's text and the point's world position (north, east, down).
+  void pointPicked(const QString& text, const QVector3D& ned);
 
  private:
   struct PointLayer {

@@ -109,10 +109,22 @@ MainWindow::MainWindow(QWidget* parent)
   wireRunner();
 
   connect(timeline_, &widgets::FrameTimeline::currentFrameChanged, this, &MainWindow::showFrame);
-  connect(map_view_, &widgets::MapView::pointPicked, this, [this](const QString& text) {
-    statusBar()->showMessage(text);
-    log(tr("picked %1").arg(text));
-  });
+  connect(map_view_, &widgets::MapView::pointPicked, this,
+          [this](const QString& text, const QVector3D& ned) {
+            QString message = text;
+            if (last_pick_) {
+              // Two picks measure: the distance from the one before, and its components.
+              const QVector3D d = ned - *last_pick_;
+              message += tr("; %1 m from the previous pick (N %2, E %3, D %4)")
+                             .arg(d.length(), 0, 'f', 3)
+                             .arg(d.x(), 0, 'f', 3)
+                             .arg(d.y(), 0, 'f', 3)
+                             .arg(d.z(), 0, 'f', 3);
+            }
+            last_pick_ = ned;
+            statusBar()->showMessage(message);
+            log(tr("picked %1").arg(message));
+          });
   connect(params_panel_, &widgets::ParamsPanel::paramsEdited, this, &MainWindow::paramsEdited);
   for (auto* view : {raw_view_, denoised_view_}) {
     connect(view, &widgets::FanView::hovered, this,
@@ -511,6 +523,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   const bool another = mission_ && mission_->folder != mission->folder;
   mission_ = mission;
   view_settled_ = false;
+  last_pick_.reset();
   if (another && own_params) {
     takeMissionParams();
   }

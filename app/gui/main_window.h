@@ -8,9 +8,11 @@
 #include <QMainWindow>
 #include <QPointer>
 #include <QTimer>
+#include <QVector3D>
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "background_job.h"
 #include "common/thread_pool.h"
@@ -169,6 +171,7 @@ class MainWindow : public QMainWindow {
   // The mission's view is the user's (a run has ended, or a session set it): re-runs keep the
   // camera, the frame and the layer.
   bool view_settled_ = false;
+  std::optional<QVector3D> last_pick_;  // the 3D view's previous pick, for distances
   int preferred_layer_ = static_cast<int>(widgets::MapView::Layer::Surface);
   // The first carve report of the run (frames done then; -1: none yet), for the time left.
   std::chrono::steady_clock::time_point carve_started_;

@@ -534,6 +534,16 @@ class WorkbenchTest : public QObject {
     QCOMPARE(clicked.count(), 1);
     QCOMPARE(clicked.front().front().toString(), text);
     QVERIFY(window.logText().contains("picked N "));
+    // A second pick measures from the first.
+    const Eigen::Vector3d other = result->surface.front().position_m.cast<double>();
+    const QPoint at_other = window.mapView().screenPositionOf(other);
+    Eigen::Vector3d picked_other;
+    QVERIFY(!window.mapView().pickAt(at_other, &picked_other).isEmpty());
+    QTest::mouseClick(gl, Qt::LeftButton, {}, at_other);
+    QCOMPARE(clicked.count(), 2);
+    const QString distance =
+        QString("%1 m from the previous pick").arg((picked_other - picked).norm(), 0, 'f', 3);
+    QVERIFY2(window.logText().contains(distance), qPrintable(window.logText()));
   }
 
   // What a save dialog returns gets the extension of what it saves, unless it has it.
