@@ -1,5 +1,5 @@
 // `sonarcarve-cli noise-model EMPTY_WATER_MISSION --out noise.yaml`: per-pixel statistics of
-// empty-water frames, for the ztest and probability detectors.
+// empty-water frames, for the ztest detector.
 #include <iostream>
 
 #include "cli/commands.h"

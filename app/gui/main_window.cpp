@@ -627,7 +627,6 @@ void MainWindow::showFrame(int index) {
         shown.range = widgets::displayRange(frame.image);
         if (detector) {
           shown.denoised = detector->apply(frame.image);
-          shown.probability = detector->params().mode == DetectorMode::Probability;
         }
         return shown;
       },
@@ -642,8 +641,7 @@ void MainWindow::showFrame(int index) {
 void MainWindow::drawFrame(const ShownFrame& shown) {
   raw_view_->setFrame(shown.raw, shown.range.low, shown.range.high);
   if (!shown.denoised.empty()) {
-    denoised_view_->setFrame(shown.denoised, shown.probability ? 0.0f : shown.range.low,
-                             shown.probability ? 1.0f : shown.range.high);
+    denoised_view_->setFrame(shown.denoised, shown.range.low, shown.range.high);
   } else {
     denoised_view_->clearFrame();
   }

@@ -122,7 +122,6 @@ class MainWindow : public QMainWindow {
     cv::Mat raw;
     cv::Mat denoised;
     DisplayWindow range;
-    bool probability = false;
   };
   void showFrame(int index);
   void drawFrame(const ShownFrame& shown);

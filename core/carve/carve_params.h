@@ -22,17 +22,8 @@ struct CarveParams {
   double range_max_m = 0.0;
   /// Only this box of the world (NED, metres) is mapped; unset: everything the frames see.
   std::optional<Eigen::AlignedBox3d> region;
-  /// How a voxel combines its views. Minimum: the seed paper's carving (the darkest view
-  /// wins). LogOdds: pixels are detection probabilities p; a voxel sums, over its views, the
-  /// evidence log(p / (1 - p)) - arc_prior (the prior that a voxel on a lit arc is not the
-  /// one that returned), is occupied while the sum is positive and is carved for good once
-  /// it falls below `carve_log_odds`. One dark speckle lowers the sum; it no longer carves.
-  enum class Fusion { Minimum, LogOdds };
-  Fusion fusion = Fusion::Minimum;
-  double arc_prior = 2.0;
-  double carve_log_odds = -4.0;
 
-  /// Beam-aware carving (fast engine, Minimum fusion; docs/carving.md). The engine assumes
+  /// Beam-aware carving (fast engine; docs/reconstruction.md). The engine assumes
   /// the sinc^2 elevation beam of sonar/beam_pattern.h (-3 dB at +-aperture/2) and carves
   /// over its whole main lobe, to the first null: a pixel of intensity I bounds what a return
   /// at elevation theta would give on the beam's axis by I / p(theta), and a voxel is carved
@@ -50,7 +41,7 @@ struct CarveParams {
   /// level, so it carves only inside +-aperture/2, where the beam keeps half its power.
   enum class DarkPixels { Exact, BelowDetection };
   DarkPixels dark_pixels = DarkPixels::BelowDetection;
-  /// Robust carving (fast engine, Minimum fusion): a voxel is carved once this many views
+  /// Robust carving (fast engine): a voxel is carved once this many views
   /// have found it empty; 1 is the seed paper's rule (one view of empty water carves). More
   /// votes tolerate views placed a little off by their navigation; they carve ghosts and
   /// noise later.

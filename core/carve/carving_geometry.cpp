@@ -9,8 +9,7 @@
 namespace sonarcarve {
 
 bool carvesMainLobe(const SonarModel& sonar, const CarveParams& params) {
-  return params.beam_aware && params.fusion == CarveParams::Fusion::Minimum &&
-         sonar.elevationBeam() == ElevationBeam::MainLobe;
+  return params.beam_aware && sonar.elevationBeam() == ElevationBeam::MainLobe;
 }
 
 CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& params)

@@ -14,7 +14,7 @@
 namespace sonarcarve {
 
 /// Whether carving is beam-aware (CarveParams::beam_aware) for this sonar: not for a clipped
-/// beam, nor for log-odds fusion.
+/// beam.
 bool carvesMainLobe(const SonarModel& sonar, const CarveParams& params);
 
 class CarvingGeometry {

@@ -27,10 +27,6 @@ struct FrameView {
   float half_aperture = 0.0f;
   float inv_elevation_step = 0.0f;
   float margin = 0.0f;
-  // Log-odds fusion of detection probabilities instead of the minimum.
-  bool log_odds = false;
-  float arc_prior = 0.0f;
-  float carve_log_odds = 0.0f;
   // Beam-aware carving (CarveParams::beam_aware).
   bool beam_aware = false;
   bool dark_is_exact = false;
@@ -72,10 +68,6 @@ double carvedHalfElevation(const cv::Mat& pixels, const SonarModel& sonar, float
   return std::clamp(SincSquaredBeam(sonar.verticalAperture()).halfAngleAt(10.0 * std::log10(gain)),
                     aperture_half, main_lobe_half);
 }
-
-// Evidence is capped so that a voxel seen lit many times can still be carved by many dark
-// views (the log-odds of p = 0.9999 is 9.2 per view).
-constexpr float kLogOddsCap = 20.0f;
 
 // asin for the small angles of a vertical aperture: 1e-6 rad up to 15 degrees.
 inline float smallAsin(float s) {
@@ -220,23 +212,6 @@ BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
           observe(row_start + x, bound, p.z() < 0.0f);
           continue;
         }
-        if (f.log_odds) {
-          ++change.observed;
-          const float prob = std::clamp(intensity, 1e-4f, 1.0f - 1e-4f);
-          const float evidence = std::log(prob / (1.0f - prob)) - f.arc_prior;
-          float fused = v[x] == VoxelMap::kUnknown ? evidence : v[x] + evidence;
-          fused = std::min(fused, kLogOddsCap);
-          if (fused < f.carve_log_odds) {
-            fused = 0.0f;  // carved for good
-          } else if (fused == 0.0f) {
-            fused = -1e-6f;  // observed, not occupied, not carved
-          }
-          if (fused != v[x]) {
-            v[x] = fused;
-            change.values = true;
-          }
-          continue;
-        }
         observe(row_start + x, intensity, p.z() < 0.0f);
       }
     }
@@ -272,9 +247,6 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   const Eigen::Isometry3d T_sonar_world = T_world_sonar.inverse();
   FrameView frame{pixels.ptr<float>(0), pixels.cols, pixels.rows,
                   T_sonar_world.linear().cast<float>(), T_sonar_world.translation().cast<float>()};
-  frame.log_odds = params_.fusion == CarveParams::Fusion::LogOdds;
-  frame.arc_prior = static_cast<float>(params_.arc_prior);
-  frame.carve_log_odds = static_cast<float>(params_.carve_log_odds);
   frame.beam_aware = carvesMainLobe(sonar, params_);
   frame.dark_is_exact = params_.dark_pixels == CarveParams::DarkPixels::Exact;
   frame.keep_level = static_cast<float>(params_.keep_level);

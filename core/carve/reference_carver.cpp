@@ -41,9 +41,6 @@ ReferenceCarver::ReferenceCarver(const SonarModel& sonar, const CarveParams& par
     : sonar_(sonar),
       params_(params),
       tree_(std::make_unique<MinIntensityOcTree>(params.voxel_size_m)) {
-  if (params.fusion != CarveParams::Fusion::Minimum) {
-    throw Error("parameters", "engine", "the reference engine carves with the minimum only");
-  }
   const double half = 0.5 * sonar.verticalAperture();
   const int steps = static_cast<int>(std::floor(2.0 * half / params.elevation_step_rad + 1e-9));
   for (int k = 0; k <= steps; ++k) {

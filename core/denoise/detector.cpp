@@ -41,7 +41,7 @@ DetectorParams DetectorParams::resolved(bool have_noise_model) const {
 
 void DetectorParams::validate() const {
   if (!hasName(mode)) {
-    throw Error("parameters", "detector.mode", "expected auto, none, ztest, cfar or probability");
+    throw Error("parameters", "detector.mode", "expected auto, none, ztest or cfar");
   }
   if (smoothing < 1 || smoothing % 2 == 0) {
     throw Error("parameters", "detector.smoothing", "expected an odd window size >= 1");
@@ -80,9 +80,6 @@ cv::Mat Detector::apply(const cv::Mat& image) const {
   }
   if (params_.mode == DetectorMode::Cfar) {
     return cfar(image);
-  }
-  if (params_.mode == DetectorMode::Probability) {
-    return probability(image);
   }
   return image;
 }
@@ -142,23 +139,6 @@ cv::Mat Detector::cfar(const cv::Mat& original) const {
       if (static_cast<double>(v) * v > alpha * noise) {
         out.at<float>(r, c) = original.at<float>(r, c);
       }
-    }
-  }
-  return out;
-}
-
-cv::Mat Detector::probability(const cv::Mat& original) const {
-  const cv::Mat image = smoothFrame(original, params_.smoothing);
-  const cv::Mat& sigma = model_->rayleighSigma();
-  cv::Mat out(image.size(), CV_32F);
-  for (int r = 0; r < image.rows; ++r) {
-    const float* in = image.ptr<float>(r);
-    const float* s = sigma.ptr<float>(r);
-    float* o = out.ptr<float>(r);
-    for (int c = 0; c < image.cols; ++c) {
-      const float scale = std::max(s[c], 1e-3f);
-      const float u = in[c] / scale;
-      o[c] = 1.0f - std::exp(-0.5f * u * u);
     }
   }
   return out;

@@ -8,9 +8,6 @@
 //                power I^2 of a cell is compared with alpha times the mean power of
 //                `train` cells on each side beyond `guard` cells; alpha sets the false-alarm
 //                rate for exponential (Rayleigh-amplitude) noise: alpha = N (Pfa^(-1/N) - 1)
-//   probability  the detection probability p = P(background < I) from the NoiseModel's
-//                per-pixel Rayleigh fit, p = 1 - exp(-I^2 / (2 sigma^2)), carried into
-//                carving instead of a hard decision (the engine sums the views' log-odds)
 // Thread safe: apply() may run concurrently.
 #pragma once
 
@@ -24,13 +21,12 @@
 namespace sonarcarve {
 
 /// auto: ztest when a noise model is given, none otherwise.
-enum class DetectorMode { Auto, None, ZTest, Cfar, Probability };
-inline constexpr std::array<EnumName<DetectorMode>, 5> kDetectorModeNames{{
+enum class DetectorMode { Auto, None, ZTest, Cfar };
+inline constexpr std::array<EnumName<DetectorMode>, 4> kDetectorModeNames{{
     {DetectorMode::Auto, "auto"},
     {DetectorMode::None, "none"},
     {DetectorMode::ZTest, "ztest"},
     {DetectorMode::Cfar, "cfar"},
-    {DetectorMode::Probability, "probability"},
 }};
 constexpr const auto& enumNamesOf(DetectorMode) {
   return kDetectorModeNames;
@@ -54,9 +50,7 @@ struct DetectorParams {
   /// pixel's value.
   int smoothing = kDefaultSmoothing;
 
-  bool needsNoiseModel() const {
-    return mode == DetectorMode::ZTest || mode == DetectorMode::Probability;
-  }
+  bool needsNoiseModel() const { return mode == DetectorMode::ZTest; }
   /// `auto` made concrete for whether a noise model is available.
   DetectorParams resolved(bool have_noise_model) const;
   /// Throws Error on an unknown mode or a value out of range.
@@ -65,12 +59,11 @@ struct DetectorParams {
 
 class Detector {
  public:
-  /// `model` is required by ztest and probability (Error otherwise) and checked against
+  /// `model` is required by ztest (Error otherwise) and checked against
   /// `sonar`'s geometry.
   Detector(DetectorParams params, std::shared_ptr<const NoiseModel> model, const SonarModel& sonar);
 
-  /// CV_32F output of the frame's size: kept intensities (0 = empty water), or detection
-  /// probabilities in probability mode.
+  /// CV_32F output of the frame's size: kept intensities (0 = empty water).
   cv::Mat apply(const cv::Mat& image) const;
   const DetectorParams& params() const { return params_; }
   /// The CA-CFAR threshold factor for the parameters' training size and false-alarm rate.
@@ -79,7 +72,6 @@ class Detector {
  private:
   cv::Mat zTest(const cv::Mat& image) const;
   cv::Mat cfar(const cv::Mat& image) const;
-  cv::Mat probability(const cv::Mat& image) const;
 
   DetectorParams params_;
   std::shared_ptr<const NoiseModel> model_;

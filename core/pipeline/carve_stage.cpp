@@ -45,10 +45,6 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
   result.carve = params_.carve;
   result.carve.region = bounds;
   result.carve.keep_view_counts = params_.refinement.enabled;
-  if (source.probabilities()) {
-    result.carve.fusion = CarveParams::Fusion::LogOdds;
-    result.carve.intensity_threshold = 0.0;
-  }
   result.carver = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
   std::optional<PoseRefiner> refiner;
   if (params_.refinement.enabled && result.carver->blockMap() != nullptr) {

@@ -89,8 +89,4 @@ Frame DenoisedFrames::load(std::size_t index) const {
   return frame;
 }
 
-bool DenoisedFrames::probabilities() const {
-  return detector_->params().mode == DetectorMode::Probability;
-}
-
 }  // namespace sonarcarve

@@ -57,8 +57,6 @@ class DenoisedFrames {
   /// Throws Error naming the frame's file if it cannot be read.
   Frame load(std::size_t index) const;
   const Detector& detector() const { return *detector_; }
-  /// True when frames carry detection probabilities (fused as log-odds), not intensities.
-  bool probabilities() const;
 
  private:
   const Mission& mission_;

@@ -60,9 +60,6 @@ bool usesZTest(const Params& p) {
 bool usesCfar(const Params& p) {
   return p.resolvedDetectorMode() == DetectorMode::Cfar;
 }
-bool usesProbability(const Params& p) {
-  return p.resolvedDetectorMode() == DetectorMode::Probability;
-}
 bool usesDetector(const Params& p) {
   return p.resolvedDetectorMode() != DetectorMode::None;
 }
@@ -95,9 +92,9 @@ std::vector<ParamSpec> makeSchema() {
   return {
       // Denoising: what the analyst tunes first.
       {.key = "detector.mode",
-       .help = "what separates returns from noise before carving: auto (ztest with a noise "
-               "model, none without), none, ztest, cfar (needs no noise model) or probability "
-               "(experimental)",
+       .help = "what separates returns from noise before carving: auto (ztest, with the given "
+               "noise model or one learned from the mission's own frames; none on noise-free "
+               "frames), none, ztest or cfar (needs no noise model)",
        .flag = "--detector",
        .gui = {.group = "Denoising", .label = "Detector"},
        .access = field([](auto& p) -> auto& { return p.detector.mode; })},
@@ -137,8 +134,9 @@ std::vector<ParamSpec> makeSchema() {
        .access = field([](auto& p) -> auto& { return p.detector.smoothing; }),
        .applies = usesDetector},
       {.key = "noise_model",
-       .help = "per-pixel empty-water statistics (sonarcarve-cli noise-model), needed by ztest "
-               "and probability; in a YAML file, relative to the file's folder",
+       .help = "per-pixel empty-water statistics (sonarcarve-cli noise-model) for the ztest; "
+               "none: learned from the mission's own frames; in a YAML file, relative to the "
+               "file's folder",
        .flag = "--noise-model",
        .gui = {.group = "Denoising",
                .label = "Noise model",
@@ -161,33 +159,6 @@ std::vector<ParamSpec> makeSchema() {
            {.group = "Denoising", .label = "CFAR training", .advanced = true, .min = 1, .max = 500},
        .access = field([](auto& p) -> auto& { return p.detector.cfar_train; }),
        .applies = usesCfar},
-      {.key = "detector.arc_prior",
-       .unit = "log-odds",
-       .help = "probability detector: evidence subtracted per view (the prior that a voxel on a "
-               "lit arc is not the one that returned)",
-       .flag = "--arc-prior",
-       .gui = {.group = "Denoising",
-               .label = "Arc prior",
-               .advanced = true,
-               .min = -50,
-               .max = 50,
-               .step = 0.5},
-       .access = field([](auto& p) -> auto& { return p.carve.arc_prior; }),
-       .applies = usesProbability},
-      {.key = "detector.carve_log_odds",
-       .unit = "log-odds",
-       .help = "probability detector: a voxel whose summed evidence falls below this is carved "
-               "for good",
-       .flag = "--carve-log-odds",
-       .gui = {.group = "Denoising",
-               .label = "Carve log-odds",
-               .advanced = true,
-               .min = -50,
-               .max = 50,
-               .step = 0.5},
-       .access = field([](auto& p) -> auto& { return p.carve.carve_log_odds; }),
-       .applies = usesProbability},
-
       // Carving.
       {.key = "intensity_threshold",
        .unit = "counts",

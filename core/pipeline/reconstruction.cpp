@@ -81,7 +81,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   result.detector = std::string(toString(noise.detector.mode));
   result.denoising = noise.reason;
   const DenoisedFrames frames(mission_, sonar_, noise);
-  if (carvesMainLobe(sonar_, stage.carve) && !frames.probabilities()) {
+  if (carvesMainLobe(sonar_, stage.carve)) {
     try {
       result.keep_level = measureKeepLevel(frames, posed, stage.carve.dynamic_range_db, progress);
     } catch (const Cancelled&) {

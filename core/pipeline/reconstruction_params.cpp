@@ -61,6 +61,9 @@ class ParamsReader {
           f_.fail(it->second, key, "expected a mapping of " + listed(below));
         }
         readMapping(it->second, key, p);
+      } else if (key == "detector.arc_prior" || key == "detector.carve_log_odds") {
+        // Keys of the probability detector, removed (docs/denoising.md): every parameter
+        // file written before holds them; they meant nothing to the other detectors.
       } else {
         f_.fail(it->first, key, "unknown key; expected one of " + listed(keysBelow(prefix)));
       }

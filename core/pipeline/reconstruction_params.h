@@ -39,7 +39,7 @@ struct ReconstructionParams {
   /// Surface mesh from the surface points (voxel_size_m follows carve.voxel_size_m).
   bool mesh_enabled = true;
   MeshParams mesh;
-  /// Noise model file for the ztest and probability detectors ("" = none).
+  /// Noise model file for the ztest detector ("" = none).
   std::string noise_model;
   std::size_t first_frame = 0;
   long last_frame = -1;  ///< exclusive; -1 means to the end

@@ -175,7 +175,10 @@ TEST_F(ParamsYamlErrors, WrongTypesOfEveryKind) {
             at(1, "frames.stride") + "expected a whole number, at least 1, got '1.5'");
   EXPECT_EQ(errorOf("detector: 3\n"), at(1, "detector") +
                                           "expected a mapping of mode, z, cfar_pfa, smoothing, "
-                                          "cfar_guard, cfar_train, arc_prior, carve_log_odds");
+                                          "cfar_guard, cfar_train");
+  // The probability detector was removed (docs/denoising.md): a file asking for it is refused.
+  EXPECT_EQ(errorOf("detector: {mode: probability}\n"),
+            at(1, "detector.mode") + "expected auto, none, ztest or cfar, got 'probability'");
   EXPECT_EQ(errorOf("voxel_size_m: [1, 2]\n"),
             at(1, "voxel_size_m") + "expected a number, above 0");
 }
