@@ -29,7 +29,7 @@ struct SimulateOptions {
   NavErrorSpec nav_error;
   double elevation_step_deg = 0.1;
   int rays_per_beam = 2;
-  std::string beam = "clipped";
+  std::string beam = "realistic";
   double horizontal_beam_width_deg = 0.0;
   float reflectivity = 0.8f;
   bool empty_water = false;

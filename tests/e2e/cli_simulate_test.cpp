@@ -35,8 +35,9 @@ TEST(CliSimulate, WritesARiserMissionThatInfoReads) {
   EXPECT_EQ(mission.sonar.rows(), 500);
   const std::string settings = test::readText(out / "simulation.yaml");
   EXPECT_NE(settings.find("seed: 4"), std::string::npos) << settings;
-  EXPECT_NE(settings.find("beam: clipped"), std::string::npos) << settings;
-  EXPECT_DOUBLE_EQ(settingValue(settings, "traced_elevation_deg"), 10.0) << settings;
+  // The realistic beam is the default: traced to the second null of a 20 degree sinc^2.
+  EXPECT_NE(settings.find("beam: realistic"), std::string::npos) << settings;
+  EXPECT_NEAR(settingValue(settings, "traced_elevation_deg"), 45.22, 0.01) << settings;
 
   // It refuses to overwrite a mission unless told to.
   const auto again = runCli("simulate --scene riser --max-frames 1 --out " + quoted(out));
@@ -45,17 +46,17 @@ TEST(CliSimulate, WritesARiserMissionThatInfoReads) {
   EXPECT_EQ(readMission(out).frames.size(), 3u);
 }
 
-TEST(CliSimulate, RealisticBeamIsRecordedInTheSettings) {
+TEST(CliSimulate, ClippedBeamIsRecordedInTheSettings) {
   test::ScratchDir dir;
   const auto out = dir.path() / "riser";
   const auto r =
-      runCli("simulate --scene riser --max-frames 2 --beam realistic --out " + quoted(out));
+      runCli("simulate --scene riser --max-frames 2 --beam clipped --out " + quoted(out));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(readMission(out).frames.size(), 2u);
   const std::string settings = test::readText(out / "simulation.yaml");
-  EXPECT_NE(settings.find("beam: realistic"), std::string::npos) << settings;
-  // Traced to the second null of a 20 degree sinc^2: 45.2 degrees.
-  EXPECT_NEAR(settingValue(settings, "traced_elevation_deg"), 45.22, 0.01) << settings;
+  EXPECT_NE(settings.find("beam: clipped"), std::string::npos) << settings;
+  // The seed paper's beam: traced over +-aperture/2 only.
+  EXPECT_DOUBLE_EQ(settingValue(settings, "traced_elevation_deg"), 10.0) << settings;
   const auto bad = runCli("simulate --scene riser --beam fuzzy --out " + quoted(dir.path() / "b"));
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_NE(bad.output.find("--beam"), std::string::npos) << bad.output;

@@ -41,6 +41,12 @@ SonarModel paperSonar() {
                     degToRad(20));
 }
 
+ImagingSettings clippedBeam() {
+  ImagingSettings settings;
+  settings.beam = SimulatedBeam::Clipped;
+  return settings;
+}
+
 SonarModel nonUniformSonar() {
   std::vector<double> centres;
   for (int j = 0; j < 256; ++j) {

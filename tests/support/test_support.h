@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 
+#include "sim/sonar_simulator.h"
 #include "sonar/sonar_model.h"
 
 namespace sonarcarve::test {
@@ -36,6 +37,9 @@ std::filesystem::path copyExampleMission(const std::filesystem::path& dir,
 
 /// The seed paper's sonar: 2 cm bins to 10 m, 130 deg in 650 beams, 20 deg aperture.
 SonarModel paperSonar();
+/// Imaging with the seed paper's clipped beam (nothing outside +-aperture/2), for tests of the
+/// engine against the paper's own model; the simulator's default is the realistic beam.
+ImagingSettings clippedBeam();
 /// A sonar with a non-uniform table, like the Oculus': 256 beams over +-30 deg, spaced
 /// more finely at the centre.
 SonarModel nonUniformSonar();

@@ -11,6 +11,7 @@
 #include "sim/simulation_run.h"
 #include "sim/sonar_simulator.h"
 #include "sim/trajectory.h"
+#include "support/test_support.h"
 
 namespace sonarcarve {
 namespace {
@@ -25,7 +26,7 @@ TEST(CarveAgreement, FastAndReferenceEnginesAgreeOnOccupiedVoxels) {
   const Trajectory trajectory = makeTrajectory(TrajectorySpec{}, riser.target);
   const RayCaster caster(riser);
   ThreadPool pool;
-  const SonarSimulator simulator(caster, sonar, ImagingSettings{}, pool);
+  const SonarSimulator simulator(caster, sonar, test::clippedBeam(), pool);
   CarveParams params;
   params.range_min_m = 3.6;
   params.range_max_m = 4.8;

@@ -27,7 +27,7 @@ class Pipeline : public ::testing::Test {
     dir_ = new test::ScratchDir();
     TrajectorySpec trajectory;
     SimulationRequest request{
-        makeDemoScene("riser"), "riser",        paperSonar(), trajectory, {},
+        makeDemoScene("riser"), "riser",        paperSonar(), trajectory, test::clippedBeam(),
         NoiseSpec::none(),      NavErrorSpec{}, false,        24,         dir_->path() / "riser"};
     SilentProgress progress;
     ThreadPool pool;

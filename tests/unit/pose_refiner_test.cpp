@@ -29,7 +29,7 @@ class PoseRefinement : public ::testing::Test {
     caster_ = new RayCaster(*scene_);
     sonar_ = new SonarModel(test::paperSonar());
     pool_ = new ThreadPool(2);
-    const SonarSimulator simulator(*caster_, *sonar_, ImagingSettings{}, *pool_);
+    const SonarSimulator simulator(*caster_, *sonar_, test::clippedBeam(), *pool_);
     images_ = new std::vector<cv::Mat>();
     for (int i = 0; i < kFrames; ++i) {
       images_->push_back(simulator.render(truePose(i)));

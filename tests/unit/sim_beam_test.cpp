@@ -130,6 +130,7 @@ TEST(SimBeam, RealisticElevationBeamFollowsSincSquared) {
 TEST(SimBeam, ClippedBeamStopsAtTheAperture) {
   const SonarModel sonar = smallSonar();
   ImagingSettings clipped;
+  clipped.beam = SimulatedBeam::Clipped;
   clipped.elevation_step_rad = degToRad(0.01);
   const double half = 0.5 * sonar.verticalAperture();
   EXPECT_GT(bandEnergy(sonar, clipped, half - degToRad(1), half), 0.0);

@@ -9,6 +9,7 @@
 #include "sim/ray_caster.h"
 #include "sim/sonar_simulator.h"
 #include "support/sim_scenes.h"
+#include "support/test_support.h"
 
 namespace sonarcarve {
 namespace {
@@ -23,7 +24,8 @@ SonarModel testSonar() {
 }
 
 // Sonar at the origin looking north (world = sonar frame).
-cv::Mat render(const Scene& scene, const SonarModel& sonar, ImagingSettings settings = {}) {
+cv::Mat render(const Scene& scene, const SonarModel& sonar,
+               ImagingSettings settings = test::clippedBeam()) {
   ThreadPool pool;
   const RayCaster caster(scene);
   const SonarSimulator sim(caster, sonar, settings, pool);
@@ -72,7 +74,7 @@ TEST(SimImageFormation, TiltedPlaneFollowsTheCosineLaw) {
 
 TEST(SimImageFormation, ReturnsFollowTheBeamPatternAcrossTheAperture) {
   const SonarModel sonar = testSonar();
-  ImagingSettings fine;
+  ImagingSettings fine = test::clippedBeam();
   fine.elevation_step_rad = degToRad(0.02);
   const double range = 5.0;
   // A 10 cm plate facing the sonar at elevation theta; its energy relative to theta = 0
@@ -125,7 +127,7 @@ TEST(SimImageFormation, GrazingSeabedGivesNoStriping) {
   const SonarModel sonar = testSonar();
   const RayCaster caster(plate({5, 0, 1.5}, {0, 0, -1}, 30.0, 0.5f));
   ThreadPool pool;
-  const SonarSimulator sim(caster, sonar, ImagingSettings{}, pool);
+  const SonarSimulator sim(caster, sonar, test::clippedBeam(), pool);
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = Eigen::AngleAxisd(degToRad(-10), Eigen::Vector3d::UnitY()).toRotationMatrix();
   const cv::Mat image = sim.render(T);
@@ -149,7 +151,7 @@ TEST(SimImageFormation, RiserDemoShowsTheRiserAtItsStandoff) {
   const SonarModel sonar = testSonar();
   const RayCaster caster(riser);
   ThreadPool pool;
-  const SonarSimulator sim(caster, sonar, ImagingSettings{}, pool);
+  const SonarSimulator sim(caster, sonar, test::clippedBeam(), pool);
   // Sonar level at 17 m depth, 4.5 m south of the riser axis, looking north.
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.translation() = Eigen::Vector3d(-4.5, 0, 17.0);

@@ -18,7 +18,7 @@ SimulationRequest riserRequest(const std::filesystem::path& out) {
                            "riser",
                            paperSonar(),
                            trajectory,
-                           {},
+                           test::clippedBeam(),
                            NoiseSpec{},
                            NavErrorSpec{},
                            false,
