@@ -29,6 +29,10 @@ void AccuracyPanel::showNoGroundTruth() {
   label_->setText(tr("No ground truth: accuracy needs ground_truth.ply in the mission's folder."));
 }
 
+void AccuracyPanel::showPending() {
+  label_->setText(tr("The run is measured against the ground truth when it ends."));
+}
+
 void AccuracyPanel::showEvaluating() {
   label_->setText(tr("Measuring the run against the ground truth…"));
 }

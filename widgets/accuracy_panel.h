@@ -17,6 +17,8 @@ class AccuracyPanel : public QWidget {
  public:
   explicit AccuracyPanel(QWidget* parent = nullptr);
   void showNoGroundTruth();
+  /// A ground truth exists: the figures come when the run ends.
+  void showPending();
   void showEvaluating();
   void showResult(const EvaluationResult& result);
   /// What the panel says, one line per figure, for tests and the log.

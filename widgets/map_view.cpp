@@ -545,7 +545,9 @@ void MapView::updateScaleBar() {
           ? 2.0 * camera->GetParallelScale()
           : 2.0 * camera->GetDistance() * std::tan(degToRad(camera->GetViewAngle()) / 2.0);
   scale_bar_->setMetresPerPixel(gl_->height() > 0 ? view_height_m / gl_->height() : 0.0);
-  scale_bar_->move((width() - scale_bar_->width()) / 2, height() - scale_bar_->height() - 8);
+  // Over the triad, clear of the colour key on the left.
+  scale_bar_->move(width() - scale_bar_->width() - 4,
+                   height() - triad_->height() - scale_bar_->height() - 8);
   scale_bar_->raise();
 }
 

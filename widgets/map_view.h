@@ -98,7 +98,7 @@ class MapView : public QWidget {
   QPoint screenPositionOf(const Eigen::Vector3d& ned) const;
   /// The north, east and down axes on the screen as the triad in the corner draws them.
   std::array<QPointF, 3> axesOnScreen() const;
-  /// The scale bar over the view's bottom edge (metres at the camera's focal point).
+  /// The scale bar over the triad (metres at the camera's focal point).
   const ScaleBar& scaleBar() const { return *scale_bar_; }
   bool hasErrors() const { return has_errors_; }
 

@@ -745,6 +745,9 @@ void MainWindow::startRun() {
   layer_->setCurrentIndex(0);
   result_.reset();
   accuracy_job_.discard();  // of the run superseded
+  if (truth_mesh_) {
+    accuracy_panel_->showPending();
+  }
   latest_carved_frame_ = -1;
   carve_started_done_ = -1;
   {
