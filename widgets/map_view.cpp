@@ -25,6 +25,8 @@
 #include "axes_triad.h"
 #include "colour_legend.h"
 #include "colour_maps.h"
+#include "common/angles.h"
+#include "scale_bar.h"
 #include "vtk_gl_widget.h"
 
 namespace sonarcarve::widgets {
@@ -74,6 +76,38 @@ vtkSmartPointer<vtkLookupTable> lookupTable(const std::array<unsigned char, 3>* 
   return lut;
 }
 
+// Calls visit(block, k) for each point drawn: those inside `region` (all without one), every
+// stride-th of them.
+template <typename Visit>
+void forEachDrawn(const std::vector<const MapViewBlock*>& blocks, const Eigen::AlignedBox3d* region,
+                  std::size_t stride, Visit visit) {
+  std::size_t seen = 0;
+  for (const MapViewBlock* b : blocks) {
+    for (std::size_t k = 0; k < b->points.size(); ++k) {
+      if (region != nullptr && !region->contains(b->points[k].cast<double>())) {
+        continue;
+      }
+      if (seen++ % stride == 0) {
+        visit(*b, k);
+      }
+    }
+  }
+}
+
+// How many points of `blocks` lie inside `region` (all without one).
+std::size_t countInside(const std::vector<const MapViewBlock*>& blocks,
+                        const Eigen::AlignedBox3d* region) {
+  std::size_t n = 0;
+  if (region == nullptr) {
+    for (const MapViewBlock* b : blocks) {
+      n += b->points.size();
+    }
+    return n;
+  }
+  forEachDrawn(blocks, region, 1, [&](const MapViewBlock&, std::size_t) { ++n; });
+  return n;
+}
+
 }  // namespace
 
 MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) {
@@ -88,6 +122,7 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   legend_ = new ColourLegend(this);
   legend_->hide();
   triad_ = new AxesTriad(this);
+  scale_bar_ = new ScaleBar(this);
   connect(gl_, &VtkGlWidget::clicked, this, [this](QPoint position) {
     Eigen::Vector3d ned;
     const QString text = pickAt(position, &ned);
@@ -108,13 +143,16 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   renderer->SetBackground2(0.22, 0.26, 0.31);
   renderer->GradientBackgroundOn();
 
-  for (PointLayer* layer : {&map_layer_, &surface_layer_}) {
+  for (PointLayer* layer : {&map_layer_, &provisional_layer_, &surface_layer_}) {
     layer->poly = vtkSmartPointer<vtkPolyData>::New();
     layer->actor = makeActor(layer->poly);
     layer->actor->GetProperty()->SetPointSize(3.0f);
     renderer->AddActor(layer->actor);
   }
   surface_layer_.actor->GetProperty()->SetPointSize(4.0f);
+  // Provisional voxels: see-through and smaller, so the settled map stands out.
+  provisional_layer_.actor->GetProperty()->SetOpacity(0.3);
+  provisional_layer_.actor->GetProperty()->SetPointSize(2.0f);
 
   track_actor_ = makeActor(vtkSmartPointer<vtkPolyData>::New());
   track_actor_->GetProperty()->SetColor(0.95, 0.85, 0.25);
@@ -130,9 +168,9 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   fan_actor_->GetProperty()->LightingOff();
   renderer->AddActor(fan_actor_);
 
-  mesh_actor_ = makeActor(vtkSmartPointer<vtkPolyData>::New());
-  mesh_actor_->GetProperty()->SetColor(0.78, 0.80, 0.84);
-  renderer->AddActor(mesh_actor_);
+  mesh_layer_.poly = vtkSmartPointer<vtkPolyData>::New();
+  mesh_layer_.actor = makeActor(mesh_layer_.poly);
+  renderer->AddActor(mesh_layer_.actor);
   setLayer(Layer::Map);
 
   redraw_timer_.setSingleShot(true);
@@ -158,6 +196,7 @@ QString MapView::caption() const {
 
 void MapView::clearMap() {
   blocks_.clear();
+  latest_frames_done_ = 0;
   surface_ = MapViewBlock{};
   has_errors_ = false;
   first_points_ = true;
@@ -175,8 +214,9 @@ void MapView::setSurface(MapViewBlock surface) {
 void MapView::setLayer(Layer layer) {
   layer_ = layer;
   map_layer_.actor->SetVisibility(layer == Layer::Map);
+  provisional_layer_.actor->SetVisibility(layer == Layer::Map);
   surface_layer_.actor->SetVisibility(layer == Layer::Surface);
-  mesh_actor_->SetVisibility(layer == Layer::Mesh);
+  mesh_layer_.actor->SetVisibility(layer == Layer::Mesh);
   render();
 }
 
@@ -188,12 +228,30 @@ std::vector<const MapViewBlock*> MapView::mapBlocks() const {
   return all;
 }
 
+bool MapView::provisional(const MapViewBlock& block) const {
+  return live_ && latest_frames_done_ < block.frames_done + kSettleFrames;
+}
+
+void MapView::setLive(bool live) {
+  live_ = live;
+  scheduleRedraw();
+}
+
+std::size_t MapView::provisionalPointCount() const {
+  return static_cast<std::size_t>(provisional_layer_.poly->GetNumberOfPoints());
+}
+
+std::size_t MapView::settledPointCount() const {
+  return static_cast<std::size_t>(map_layer_.poly->GetNumberOfPoints());
+}
+
 void MapView::applyBlocks(std::vector<MapViewBlock> blocks) {
   for (MapViewBlock& b : blocks) {
     if (b.points.empty()) {
       blocks_.erase(b.block);
     } else {
       has_errors_ = has_errors_ || !b.errors_m.empty();
+      latest_frames_done_ = std::max(latest_frames_done_, b.frames_done);
       blocks_[b.block] = std::move(b);
     }
   }
@@ -228,8 +286,33 @@ std::vector<Eigen::Vector3f> MapView::mapPoints() const {
   return all;
 }
 
+void MapView::fillMap() {
+  // One stride for both parts, so that together they stay within kMaxDrawnMapPoints.
+  std::vector<const MapViewBlock*> settled;
+  std::vector<const MapViewBlock*> changing;
+  std::size_t total = 0;
+  for (const MapViewBlock* b : mapBlocks()) {
+    (provisional(*b) ? changing : settled).push_back(b);
+    total += countInside({b}, clipRegion());
+  }
+  const std::size_t stride =
+      total <= kMaxDrawnMapPoints ? 1 : (total + kMaxDrawnMapPoints - 1) / kMaxDrawnMapPoints;
+  fillWithStride(map_layer_, settled, stride);
+  fillWithStride(provisional_layer_, changing, stride);
+  // One colour scale for both.
+  const double low = std::min(map_layer_.low, provisional_layer_.low);
+  const double high = std::max(map_layer_.high, provisional_layer_.high);
+  for (PointLayer* layer : {&map_layer_, &provisional_layer_}) {
+    layer->low = low;
+    layer->high = high;
+    if (vtkMapper* mapper = layer->actor->GetMapper()) {
+      mapper->SetScalarRange(low, high);
+    }
+  }
+}
+
 void MapView::redraw() {
-  fill(map_layer_, mapBlocks(), kMaxDrawnMapPoints);
+  fillMap();
   if (first_points_ && !blocks_.empty()) {
     first_points_ = false;
     fitCamera();
@@ -240,62 +323,155 @@ void MapView::redraw() {
 
 void MapView::fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
                    std::size_t max_points) {
-  std::size_t total = 0;
-  for (const MapViewBlock* b : blocks) {
-    total += b->points.size();
-  }
-  layer.stride = total <= max_points ? 1 : (total + max_points - 1) / max_points;
+  const std::size_t total = countInside(blocks, clipRegion());
+  fillWithStride(layer, blocks, total <= max_points ? 1 : (total + max_points - 1) / max_points);
+}
+
+void MapView::fillWithStride(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
+                             std::size_t stride) {
+  const std::size_t total = countInside(blocks, clipRegion());
+  layer.stride = stride;
   const auto n = static_cast<vtkIdType>((total + layer.stride - 1) / layer.stride);
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToFloat();
   points->SetNumberOfPoints(n);
   auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
-  std::size_t k = 0;
-  for (const MapViewBlock* b : blocks) {
-    for (const Eigen::Vector3f& p : b->points) {
-      if (k++ % layer.stride == 0) {
-        xyz[0] = p.x();
-        xyz[1] = p.y();
-        xyz[2] = p.z();
-        xyz += 3;
-      }
-    }
-  }
+  forEachDrawn(blocks, clipRegion(), layer.stride, [&](const MapViewBlock& b, std::size_t k) {
+    const Eigen::Vector3f& p = b.points[k];
+    xyz[0] = p.x();
+    xyz[1] = p.y();
+    xyz[2] = p.z();
+    xyz += 3;
+  });
   layer.poly->SetPoints(points);
   layer.poly->SetVerts(pointCells(n, false));
-  colour(layer, blocks, layer.stride);
+  colour(layer, blocks, layer.stride, clipRegion());
+}
+
+void MapView::fillMesh() {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh_block_.points.size()));
+  for (std::size_t i = 0; i < mesh_block_.points.size(); ++i) {
+    const Eigen::Vector3f& v = mesh_block_.points[i];
+    points->SetPoint(static_cast<vtkIdType>(i), v.x(), v.y(), v.z());
+  }
+  // A triangle is drawn when its centre lies in the clip.
+  const Eigen::AlignedBox3d* region = clipRegion();
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& t : mesh_triangles_) {
+    const Eigen::Vector3f centre =
+        (mesh_block_.points[t[0]] + mesh_block_.points[t[1]] + mesh_block_.points[t[2]]) / 3.0f;
+    if (region == nullptr || region->contains(centre.cast<double>())) {
+      const vtkIdType ids[3] = {t[0], t[1], t[2]};
+      triangles->InsertNextCell(3, ids);
+    }
+  }
+  mesh_layer_.poly->Initialize();  // drops the previous mesh's points, cells and values
+  mesh_layer_.poly->SetPoints(points);
+  mesh_layer_.poly->SetPolys(triangles);
+  mesh_layer_.stride = 1;
+  if (mesh_normals_.size() == mesh_block_.points.size()) {
+    auto normals = vtkSmartPointer<vtkFloatArray>::New();
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh_normals_.size()));
+    for (std::size_t i = 0; i < mesh_normals_.size(); ++i) {
+      normals->SetTypedTuple(static_cast<vtkIdType>(i), mesh_normals_[i].data());
+    }
+    mesh_layer_.poly->GetPointData()->SetNormals(normals);
+  }
+  colour(mesh_layer_, {&mesh_block_}, 1, nullptr);  // the clip drops triangles, not vertices
+}
+
+const Eigen::AlignedBox3d* MapView::clipRegion() const {
+  return clip_.active() ? &clip_region_ : nullptr;
+}
+
+void MapView::setClip(const ViewClip& clip) {
+  clip_ = clip;
+  clip_region_ = clip.region();
+  fillMap();
+  fill(surface_layer_, {&surface_}, std::numeric_limits<std::size_t>::max());
+  fillMesh();
+  render();
+}
+
+const MapView::PointLayer* MapView::shownLayer() const {
+  switch (layer_) {
+    case Layer::Map:
+      return map_layer_.poly->GetNumberOfPoints() > 0 ? &map_layer_ : &provisional_layer_;
+    case Layer::Surface:
+      return &surface_layer_;
+    case Layer::Mesh:
+      break;
+  }
+  return &mesh_layer_;
+}
+
+std::size_t MapView::drawnPointCount() const {
+  return drawnPoints().size();
+}
+
+std::vector<Eigen::Vector3f> MapView::drawnPoints() const {
+  std::vector<const PointLayer*> shown{shownLayer()};
+  if (layer_ == Layer::Map) {
+    shown = {&map_layer_, &provisional_layer_};
+  }
+  std::vector<Eigen::Vector3f> points;
+  for (const PointLayer* layer : shown) {
+    for (vtkIdType i = 0; i < layer->poly->GetNumberOfPoints(); ++i) {
+      double p[3];
+      layer->poly->GetPoint(i, p);
+      points.push_back(Eigen::Vector3d(p[0], p[1], p[2]).cast<float>());
+    }
+  }
+  return points;
+}
+
+std::size_t MapView::drawnTriangleCount() const {
+  return static_cast<std::size_t>(mesh_layer_.poly->GetNumberOfPolys());
+}
+
+Eigen::AlignedBox3d MapView::dataBounds() const {
+  Eigen::AlignedBox3d bounds;
+  for (const MapViewBlock* b : mapBlocks()) {
+    for (const auto& p : b->points) {
+      bounds.extend(p.cast<double>());
+    }
+  }
+  for (const MapViewBlock* b : {&surface_, &mesh_block_}) {
+    for (const auto& p : b->points) {
+      bounds.extend(p.cast<double>());
+    }
+  }
+  return bounds;
 }
 
 void MapView::recolour() {
-  colour(map_layer_, mapBlocks(), map_layer_.stride);
-  colour(surface_layer_, {&surface_}, surface_layer_.stride);
+  fillMap();
+  colour(surface_layer_, {&surface_}, surface_layer_.stride, clipRegion());
+  colour(mesh_layer_, {&mesh_block_}, 1, nullptr);
 }
 
 void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
-                     std::size_t stride) {
+                     std::size_t stride, const Eigen::AlignedBox3d* region) {
   auto scalars = vtkSmartPointer<vtkFloatArray>::New();
   scalars->SetNumberOfValues(layer.poly->GetNumberOfPoints());
   const ColourBy by =
       colour_by_ == ColourBy::Error && !has_errors_ ? ColourBy::Intensity : colour_by_;
   vtkIdType i = 0;
-  std::size_t seen = 0;
   std::vector<float> intensities;
-  for (const MapViewBlock* b : blocks) {
-    for (std::size_t k = 0; k < b->points.size(); ++k) {
-      if (seen++ % stride != 0) {
-        continue;
-      }
-      float v = b->values[k];
-      if (by == ColourBy::Depth) {
-        v = b->points[k].z();
-      } else if (by == ColourBy::Error) {
-        v = k < b->errors_m.size() ? b->errors_m[k] : 0.0f;
-      } else {
-        intensities.push_back(v);
-      }
-      scalars->SetValue(i++, v);
+  forEachDrawn(blocks, region, stride, [&](const MapViewBlock& b, std::size_t k) {
+    float v = k < b.values.size() ? b.values[k] : 0.0f;
+    if (by == ColourBy::Depth) {
+      v = b.points[k].z();
+    } else if (by == ColourBy::Error) {
+      v = k < b.errors_m.size() ? b.errors_m[k] : 0.0f;
+    } else {
+      intensities.push_back(v);
     }
-  }
+    scalars->SetValue(i++, v);
+  });
   double range[2] = {0.0, 1.0};
   if (by == ColourBy::Error) {
     range[1] = 0.10;  // the evaluation's "floating point" distance
@@ -319,10 +495,8 @@ void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& 
 }
 
 void MapView::updateLegend() {
-  const PointLayer* shown = layer_ == Layer::Map       ? &map_layer_
-                            : layer_ == Layer::Surface ? &surface_layer_
-                                                       : nullptr;
-  if (shown == nullptr || shown->poly->GetNumberOfPoints() == 0) {
+  const PointLayer* shown = shownLayer();
+  if (shown->poly->GetNumberOfPoints() == 0) {
     legend_->hide();
     return;
   }
@@ -360,6 +534,21 @@ void MapView::updateTriad() {
   triad_->setAxes(axes);
   triad_->move(width() - triad_->width() - 4, height() - triad_->height() - 4);
   triad_->raise();
+  updateScaleBar();
+}
+
+void MapView::updateScaleBar() {
+  vtkCamera* camera = gl_->renderer()->GetActiveCamera();
+  // The height of the view at the focal point, in metres: VTK's view angle is vertical.
+  const double view_height_m =
+      camera->GetParallelProjection() != 0
+          ? 2.0 * camera->GetParallelScale()
+          : 2.0 * camera->GetDistance() * std::tan(degToRad(camera->GetViewAngle()) / 2.0);
+  scale_bar_->setMetresPerPixel(gl_->height() > 0 ? view_height_m / gl_->height() : 0.0);
+  // Over the triad, clear of the colour key on the left.
+  scale_bar_->move(width() - scale_bar_->width() - 4,
+                   height() - triad_->height() - scale_bar_->height() - 8);
+  scale_bar_->raise();
 }
 
 QString MapView::pickAt(QPoint position, Eigen::Vector3d* ned) {
@@ -547,28 +736,19 @@ void MapView::setCurrentFrame(const Eigen::Isometry3d& T_world_sonar, const Sona
   render();
 }
 
-void MapView::setMesh(const Mesh& mesh) {
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  for (const auto& v : mesh.vertices) {
-    points->InsertNextPoint(v.x(), v.y(), v.z());
-  }
-  auto triangles = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& t : mesh.triangles) {
-    const vtkIdType ids[3] = {t[0], t[1], t[2]};
-    triangles->InsertNextCell(3, ids);
-  }
-  poly->SetPoints(points);
-  poly->SetPolys(triangles);
-  vtkPolyDataMapper::SafeDownCast(mesh_actor_->GetMapper())->SetInputData(poly);
+void MapView::setMesh(const Mesh& mesh, std::vector<float> vertex_errors_m) {
+  mesh_block_ = MapViewBlock{0, mesh.vertices, mesh.intensity, std::move(vertex_errors_m)};
+  mesh_block_.values.resize(mesh.vertices.size(), 0.0f);
+  has_errors_ = has_errors_ || !mesh_block_.errors_m.empty();
+  mesh_triangles_ = mesh.triangles;
+  mesh_normals_ = mesh.normals;
+  fillMesh();
   render();
 }
 
 void MapView::fitCamera() {
   // Fit what the analyst is looking at: the shown points, else everything.
-  const PointLayer& shown = layer_ == Layer::Surface ? surface_layer_ : map_layer_;
-  const vtkSmartPointer<vtkActor>& actor = layer_ == Layer::Mesh ? mesh_actor_ : shown.actor;
-  vtkPolyData* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput());
+  vtkPolyData* poly = shownLayer()->poly;
   if (poly != nullptr && poly->GetNumberOfPoints() > 0) {
     gl_->renderer()->ResetCamera(poly->GetBounds());
   } else {

@@ -21,6 +21,7 @@
 #include "io/camera_state.h"
 #include "mesh/surface_mesher.h"
 #include "sonar/sonar_model.h"
+#include "view_clip.h"
 
 class vtkActor;
 class vtkPolyData;
@@ -30,6 +31,7 @@ namespace sonarcarve::widgets {
 
 class AxesTriad;
 class ColourLegend;
+class ScaleBar;
 class VtkGlWidget;
 
 /// One block of the map as the viewer receives it (a block with no points has become empty).
@@ -38,6 +40,7 @@ struct MapViewBlock {
   std::vector<Eigen::Vector3f> points;  ///< voxel centres, world NED
   std::vector<float> values;            ///< carved intensities
   std::vector<float> errors_m;          ///< distance to the ground truth, or empty
+  std::size_t frames_done = 0;          ///< frames carved when the block last changed
 };
 
 /// Where the camera is, to save and restore a view (io/camera_state.h).
@@ -57,11 +60,19 @@ class MapView : public QWidget {
   /// OpenGL on 2 cores took 30 to 90 ms for 90,000 points while carving, and the GUI thread
   /// must not block for more than 50 ms. The whole map is kept and exported.
   static constexpr std::size_t kMaxDrawnMapPoints = 40000;
+  /// While carving, a block of the map changed within this many frames is provisional (the
+  /// frames still see it and may carve its voxels away): drawn translucent and smaller.
+  static constexpr std::size_t kSettleFrames = 8;
 
   explicit MapView(QWidget* parent = nullptr);
   ~MapView() override;
 
   void clearMap();
+  /// Whether a run is carving the map: only then are its recently changed blocks provisional.
+  void setLive(bool live);
+  /// Points of the carved map drawn as provisional (translucent), as settled (opaque).
+  std::size_t provisionalPointCount() const;
+  std::size_t settledPointCount() const;
   void applyBlocks(std::vector<MapViewBlock> blocks);
   /// Redraws now instead of at the next redraw tick (for tests and screenshots).
   void flush();
@@ -87,6 +98,8 @@ class MapView : public QWidget {
   QPoint screenPositionOf(const Eigen::Vector3d& ned) const;
   /// The north, east and down axes on the screen as the triad in the corner draws them.
   std::array<QPointF, 3> axesOnScreen() const;
+  /// The scale bar over the triad (metres at the camera's focal point).
+  const ScaleBar& scaleBar() const { return *scale_bar_; }
   bool hasErrors() const { return has_errors_; }
 
   void setColourBy(ColourBy by);
@@ -95,7 +108,20 @@ class MapView : public QWidget {
   /// The current frame: its frustum and its polar image drawn as a fan at elevation 0.
   void setCurrentFrame(const Eigen::Isometry3d& T_world_sonar, const SonarModel& sonar,
                        const cv::Mat& image);
-  void setMesh(const Mesh& mesh);
+  /// The run's mesh, coloured like the points: intensity (each vertex's nearest surface
+  /// point), depth, or error against the ground truth (`vertex_errors_m`, empty without one).
+  void setMesh(const Mesh& mesh, std::vector<float> vertex_errors_m = {});
+  /// Draws only what lies in the clip's box and cross-section (all layers); an inactive clip
+  /// draws everything.
+  void setClip(const ViewClip& clip);
+  const ViewClip& clip() const { return clip_; }
+  /// What the layer shown draws: its points (every n-th of the carved map, inside the clip),
+  /// and for the mesh its triangles inside the clip.
+  std::size_t drawnPointCount() const;
+  std::vector<Eigen::Vector3f> drawnPoints() const;
+  std::size_t drawnTriangleCount() const;
+  /// The bounds of everything received (map, surface and mesh), for the clip's dialog.
+  Eigen::AlignedBox3d dataBounds() const;
 
   void fitCamera();
   void viewFromTop();
@@ -124,14 +150,23 @@ class MapView : public QWidget {
   };
   void updateLegend();
   void updateTriad();
+  void updateScaleBar();
   void resizeEvent(QResizeEvent* event) override;
   void redraw();
   void recolour();
   void fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
             std::size_t max_points);
-  void colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
-              std::size_t stride);
+  void fillWithStride(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
+                      std::size_t stride);
+  void fillMap();
+  void fillMesh();
+  const PointLayer* shownLayer() const;
+  const Eigen::AlignedBox3d* clipRegion() const;
+  // Colours the points of `blocks` inside `region` (all without one), every stride-th.
+  void colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks, std::size_t stride,
+              const Eigen::AlignedBox3d* region);
   std::vector<const MapViewBlock*> mapBlocks() const;
+  bool provisional(const MapViewBlock& block) const;
   void scheduleRedraw();
   void render();
 
@@ -139,6 +174,7 @@ class MapView : public QWidget {
   QLabel* caption_ = nullptr;
   ColourLegend* legend_ = nullptr;
   AxesTriad* triad_ = nullptr;
+  ScaleBar* scale_bar_ = nullptr;
   std::map<std::size_t, MapViewBlock> blocks_;
   MapViewBlock surface_;
   Layer layer_ = Layer::Map;
@@ -147,11 +183,19 @@ class MapView : public QWidget {
   bool first_points_ = true;
   QTimer redraw_timer_;
   PointLayer map_layer_;
+  PointLayer provisional_layer_;
+  bool live_ = false;
+  std::size_t latest_frames_done_ = 0;
   PointLayer surface_layer_;
+  PointLayer mesh_layer_;
+  MapViewBlock mesh_block_;  // the mesh's vertices with their values, to colour it
+  std::vector<std::array<std::uint32_t, 3>> mesh_triangles_;
+  std::vector<Eigen::Vector3f> mesh_normals_;
+  ViewClip clip_;
+  Eigen::AlignedBox3d clip_region_;
   vtkSmartPointer<vtkActor> track_actor_;
   vtkSmartPointer<vtkActor> frustum_actor_;
   vtkSmartPointer<vtkActor> fan_actor_;
-  vtkSmartPointer<vtkActor> mesh_actor_;
 };
 
 }  // namespace sonarcarve::widgets

@@ -5,6 +5,7 @@
 #include <QBuffer>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDateTime>
 #include <QDesktopServices>
 #include <QDir>
 #include <QDockWidget>
@@ -30,7 +31,9 @@
 #include <QUrl>
 #include <QVBoxLayout>
 
+#include "accuracy_panel.h"
 #include "carve/occupancy_export.h"
+#include "clip_dialog.h"
 #include "common/error.h"
 #include "fan_view.h"
 #include "frame_image.h"
@@ -46,6 +49,7 @@
 #include "mesh/mesh_export.h"
 #include "occlusion/surface_points.h"
 #include "params_panel.h"
+#include "run_history_panel.h"
 #include "track_view.h"
 
 namespace sonarcarve::gui {
@@ -146,25 +150,34 @@ void MainWindow::buildDocks() {
   auto* scroll = new QScrollArea;
   scroll->setWidget(params_panel_);
   scroll->setWidgetResizable(true);
-  auto* params_dock = new QDockWidget(tr("Parameters"), this);
-  params_dock->setObjectName("parameters");
-  params_dock->setWidget(scroll);
-  addDockWidget(Qt::LeftDockWidgetArea, params_dock);
+  const auto dock = [this](const QString& title, const char* name, QWidget* widget,
+                           Qt::DockWidgetArea area) {
+    auto* d = new QDockWidget(title, this);
+    d->setObjectName(name);
+    d->setWidget(widget);
+    addDockWidget(area, d);
+    return d;
+  };
+  dock(tr("Parameters"), "parameters", scroll, Qt::LeftDockWidgetArea);
 
   track_view_ = new widgets::TrackView;
-  auto* track_dock = new QDockWidget(tr("Navigation"), this);
-  track_dock->setObjectName("navigation");
-  track_dock->setWidget(track_view_);
-  addDockWidget(Qt::BottomDockWidgetArea, track_dock);
-
+  auto* track_dock = dock(tr("Navigation"), "navigation", track_view_, Qt::BottomDockWidgetArea);
   log_ = new QPlainTextEdit;
   log_->setReadOnly(true);
   log_->setMaximumBlockCount(5000);
-  auto* log_dock = new QDockWidget(tr("Log"), this);
-  log_dock->setObjectName("log");
-  log_dock->setWidget(log_);
-  addDockWidget(Qt::BottomDockWidgetArea, log_dock);
+  auto* log_dock = dock(tr("Log"), "log", log_, Qt::BottomDockWidgetArea);
   splitDockWidget(track_dock, log_dock, Qt::Horizontal);
+
+  // Accuracy and the run history share the bottom right, as tabs.
+  accuracy_panel_ = new widgets::AccuracyPanel;
+  auto* accuracy_dock = dock(tr("Accuracy"), "accuracy", accuracy_panel_, Qt::BottomDockWidgetArea);
+  splitDockWidget(log_dock, accuracy_dock, Qt::Horizontal);
+  history_panel_ = new widgets::RunHistoryPanel;
+  tabifyDockWidget(accuracy_dock,
+                   dock(tr("Run history"), "history", history_panel_, Qt::BottomDockWidgetArea));
+  accuracy_dock->raise();
+  connect(history_panel_, &widgets::RunHistoryPanel::goBackRequested, this,
+          &MainWindow::goBackToRun);
 }
 
 void MainWindow::buildMenus() {
@@ -298,6 +311,10 @@ void MainWindow::buildMenus() {
       fan->setColourMap(on ? widgets::ColourMap::Grey : widgets::ColourMap::Copper);
     }
   });
+  view->addAction(tr("&Clip box and cross-section…"), QKeySequence(tr("Ctrl+K")), this,
+                  &MainWindow::editClip);
+  view->addAction(tr("Show &everything (no clip)"), this,
+                  [this] { map_view_->setClip(widgets::ViewClip{}); });
   QAction* ortho = view->addAction(tr("&Orthographic"));
   ortho->setCheckable(true);
   connect(ortho, &QAction::toggled, this, [this](bool on) { map_view_->setOrthographic(on); });
@@ -387,55 +404,60 @@ void MainWindow::wireRunner() {
           [this](int, qulonglong index) { latest_carved_frame_ = static_cast<long>(index); });
   connect(runner_.get(), &ReconstructionRunner::frameSkipped, this,
           [this](int, const QString& message) { log(tr("skipped: %1").arg(message)); });
-  connect(runner_.get(), &ReconstructionRunner::finished, this,
-          [this](int, std::shared_ptr<const ReconstructionResult> result,
-                 const std::vector<float>& surface_errors_m) {
-            result_ = result;
-            follow_timer_.stop();
-            map_view_->setCaption({});
-            map_view_->flush();
-            map_view_->setMesh(result->mesh);
-            widgets::MapViewBlock surface;
-            surface.points = positionsOf(result->surface);
-            for (const SurfacePoint& p : result->surface) {
-              surface.values.push_back(p.intensity);
-            }
-            surface.errors_m = surface_errors_m;
-            map_view_->setSurface(std::move(surface));
-            if (!result->surface.empty()) {
-              layer_->setCurrentIndex(preferred_layer_);  // the surface, or the user's choice
-              if (!view_settled_) {
-                map_view_->fitCamera();
-              }
-            }
-            view_settled_ = true;
-            progress_bar_->setFormat(tr("done"));
-            const QString summary =
-                tr("done: %1 frames, %2 occupied voxels, %3 surface points, %4 mesh triangles, "
-                   "%5 s (carving %6 ms/frame)")
-                    .arg(result->frames_used)
-                    .arg(result->occupied_voxels)
-                    .arg(result->surface.size())
-                    .arg(result->mesh.triangles.size())
-                    .arg(result->total_s, 0, 'f', 1)
-                    .arg(result->carve_ms_median, 0, 'f', 1);
-            log(tr("denoising: %1, %2")
-                    .arg(QString::fromStdString(result->detector),
-                         QString::fromStdString(result->denoising)));
-            if (result->keep_level.frames > 0) {
-              log(tr("beam-aware carving: voxels kept above %1 counts on the beam's axis (%2 dB "
-                     "below the bright returns, %3)")
-                      .arg(result->keep_level.level, 0, 'f', 1)
-                      .arg(run_params_.carve.dynamic_range_db, 0, 'f', 1)
-                      .arg(result->keep_level.bright_returns, 0, 'f', 0));
-            }
-            log(summary);
-            progress_label_->setText(summary);
-            updateRunActions();
-            emit runFinished(result);
-          });
+  connect(
+      runner_.get(), &ReconstructionRunner::finished, this,
+      [this](int, std::shared_ptr<const ReconstructionResult> result,
+             const std::vector<float>& surface_errors_m, const std::vector<float>& mesh_errors_m) {
+        result_ = result;
+        follow_timer_.stop();
+        map_view_->setCaption({});
+        map_view_->setLive(false);
+        map_view_->flush();
+        map_view_->setMesh(result->mesh, mesh_errors_m);
+        widgets::MapViewBlock surface;
+        surface.points = positionsOf(result->surface);
+        for (const SurfacePoint& p : result->surface) {
+          surface.values.push_back(p.intensity);
+        }
+        surface.errors_m = surface_errors_m;
+        map_view_->setSurface(std::move(surface));
+        if (!result->surface.empty()) {
+          layer_->setCurrentIndex(preferred_layer_);  // the surface, or the user's choice
+          if (!view_settled_) {
+            map_view_->fitCamera();
+          }
+        }
+        view_settled_ = true;
+        progress_bar_->setFormat(tr("done"));
+        const QString summary =
+            tr("done: %1 frames, %2 occupied voxels, %3 surface points, %4 mesh triangles, "
+               "%5 s (carving %6 ms/frame)")
+                .arg(result->frames_used)
+                .arg(result->occupied_voxels)
+                .arg(result->surface.size())
+                .arg(result->mesh.triangles.size())
+                .arg(result->total_s, 0, 'f', 1)
+                .arg(result->carve_ms_median, 0, 'f', 1);
+        log(tr("denoising: %1, %2")
+                .arg(QString::fromStdString(result->detector),
+                     QString::fromStdString(result->denoising)));
+        if (result->keep_level.frames > 0) {
+          log(tr("beam-aware carving: voxels kept above %1 counts on the beam's axis (%2 dB "
+                 "below the bright returns, %3)")
+                  .arg(result->keep_level.level, 0, 'f', 1)
+                  .arg(run_params_.carve.dynamic_range_db, 0, 'f', 1)
+                  .arg(result->keep_level.bright_returns, 0, 'f', 0));
+        }
+        log(summary);
+        progress_label_->setText(summary);
+        updateRunActions();
+        recordRun(*result);
+        measureAccuracy(*result);
+        emit runFinished(result);
+      });
   connect(runner_.get(), &ReconstructionRunner::failed, this, [this](int, const QString& message) {
     follow_timer_.stop();
+    map_view_->setLive(false);
     progress_label_->setText(tr("Reconstruction failed"));
     map_view_->setCaption(tr("Failed: what was carved before the error, not a result"));
     showError(tr("Reconstruction failed"), message);
@@ -529,16 +551,24 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   }
   result_.reset();
   truth_.reset();
+  truth_mesh_.reset();
+  runs_.clear();
+  history_panel_->setRuns(runs_);
+  accuracy_job_.discard();
   const auto truth_file = mission_->folder / "ground_truth.ply";
   if (std::filesystem::exists(truth_file)) {
     try {
-      truth_ = std::make_shared<const MeshDistance>(loadSceneMesh(truth_file), pool_);
+      truth_mesh_ = std::make_shared<const Scene>(loadSceneMesh(truth_file));
+      truth_ = std::make_shared<const MeshDistance>(*truth_mesh_, pool_);
       log(tr("ground truth loaded: points can be coloured by their error"));
     } catch (const std::exception& e) {
       log(tr("ground truth not used: %1").arg(describe(e)));
     }
   }
   updateColourChoices();
+  if (!truth_) {
+    accuracy_panel_->showNoGroundTruth();
+  }
   for (const std::string& warning : mission_->warnings) {
     log(tr("note: %1").arg(QString::fromStdString(warning)));
   }
@@ -706,11 +736,16 @@ void MainWindow::startRun() {
   // A re-run keeps the user's camera and frame; the map being carved shows until it ends.
   const CameraState camera = map_view_->cameraState();
   map_view_->clearMap();
+  map_view_->setLive(true);
   if (view_settled_) {
     map_view_->setCameraState(camera);
   }
   layer_->setCurrentIndex(0);
   result_.reset();
+  accuracy_job_.discard();  // of the run superseded
+  if (truth_mesh_) {
+    accuracy_panel_->showPending();
+  }
   latest_carved_frame_ = -1;
   carve_started_done_ = -1;
   {
@@ -719,8 +754,8 @@ void MainWindow::startRun() {
   }
   runner_->start({mission_, params, truth_});
   map_view_->setCaption(
-      tr("Carving: provisional, voxels may yet be carved away (ghosts in the beam's tails go "
-         "as more views arrive)"));
+      tr("Carving: provisional; translucent voxels are still in view and may yet be carved "
+         "away (ghosts in the beam's tails go as more views arrive)"));
   if (!view_settled_) {
     follow_timer_.start();  // the frame view follows the carving on a mission's first run
   }
@@ -748,6 +783,7 @@ void MainWindow::cancelRun() {
   }
   runner_->cancel();
   follow_timer_.stop();
+  map_view_->setLive(false);
   {
     const QSignalBlocker block(pause_action_);
     pause_action_->setChecked(false);
@@ -833,6 +869,7 @@ Session MainWindow::currentSession() const {
   s.frame = timeline_->currentFrame();
   s.colour_by =
       widgets::MapView::nameOf(static_cast<widgets::MapView::ColourBy>(colour_by_->currentIndex()));
+  s.runs = runs_;
   return s;
 }
 
@@ -861,6 +898,8 @@ bool MainWindow::openSession(const QString& file) {
   }
   map_view_->setCameraState(s.camera);
   view_settled_ = true;  // the session's view, kept by the run it starts
+  runs_ = s.runs;        // the run the session starts adds to its history
+  history_panel_->setRuns(runs_);
   setColourBy(widgets::MapView::colourByNamed(s.colour_by));
   timeline_->setCurrentFrame(s.frame);
   follow_action_->setChecked(false);  // keep the saved frame in view
@@ -1053,6 +1092,86 @@ void MainWindow::dropEvent(QDropEvent* event) {
   }
   openPath(urls.front().toLocalFile());
   event->acceptProposedAction();
+}
+
+void MainWindow::recordRun(const ReconstructionResult& result) {
+  RunRecord run;
+  run.started = QDateTime::currentDateTime()
+                    .addMSecs(-static_cast<qint64>(1000.0 * result.total_s))
+                    .toString("yyyy-MM-dd HH:mm:ss")
+                    .toStdString();
+  run.params = run_params_;
+  run.frames = result.frames_used;
+  run.occupied_voxels = result.occupied_voxels;
+  run.surface_points = result.surface.size();
+  run.mesh_triangles = result.mesh.triangles.size();
+  run.seconds = result.total_s;
+  runs_.push_back(run);
+  history_panel_->setRuns(runs_);
+}
+
+void MainWindow::measureAccuracy(const ReconstructionResult& result) {
+  if (!truth_mesh_ || result.surface.empty()) {
+    accuracy_panel_->showNoGroundTruth();
+    return;
+  }
+  accuracy_panel_->showEvaluating();
+  // Sampling the truth and measuring both ways takes a second or more: on a worker.
+  const std::size_t run = runs_.size() - 1;
+  accuracy_job_.start(
+      // The points, not the result: the worker must not keep the run's map alive.
+      [this, truth = truth_mesh_, folder = mission_->folder,
+       points = positionsOf(result.surface)](JobContext&) {
+        std::error_code ec;
+        const auto visible_file = folder / "visible_points.ply";
+        std::vector<Eigen::Vector3f> visible;
+        if (std::filesystem::exists(visible_file, ec)) {
+          visible = readPointsPly(visible_file);
+        }
+        return evaluate(points, *truth, std::move(visible), pool_);
+      },
+      [this, run](const EvaluationResult& evaluation) {
+        accuracy_panel_->showResult(evaluation);
+        if (run < runs_.size()) {
+          runs_[run].accuracy =
+              RunAccuracy{evaluation.fscore, evaluation.accuracy_median_m,
+                          evaluation.accuracy_p90_m, evaluation.precision, evaluation.completeness};
+          history_panel_->setRuns(runs_);
+        }
+        log(tr("accuracy against the ground truth: F-score %1 at 5 cm, median %2 cm, "
+               "completeness %3 %")
+                .arg(evaluation.fscore, 0, 'f', 3)
+                .arg(100.0 * evaluation.accuracy_median_m, 0, 'f', 2)
+                .arg(100.0 * evaluation.completeness, 0, 'f', 1));
+        emit accuracyMeasured(evaluation.fscore);
+      },
+      [this](const JobError& error) {
+        accuracy_panel_->showNoGroundTruth();
+        log(tr("accuracy not measured: %1").arg(error.message));
+      });
+}
+
+void MainWindow::goBackToRun(int index) {
+  if (index < 0 || static_cast<std::size_t>(index) >= runs_.size()) {
+    return;
+  }
+  log(tr("back to run %1's parameters (%2)")
+          .arg(index + 1)
+          .arg(QString::fromStdString(runs_[static_cast<std::size_t>(index)].started)));
+  setParams(runs_[static_cast<std::size_t>(index)].params);
+  paramsEdited();
+}
+
+void MainWindow::editClip() {
+  auto* dialog = new widgets::ClipDialog(map_view_->clip(), map_view_->dataBounds(), this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this, [this, dialog] {
+    map_view_->setClip(dialog->clip());
+    const widgets::ViewClip& clip = map_view_->clip();
+    log(clip.active() ? tr("3D view clipped: %1 points drawn").arg(map_view_->drawnPointCount())
+                      : tr("3D view: everything drawn"));
+  });
+  dialog->open();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

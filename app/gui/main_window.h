@@ -21,6 +21,7 @@
 #include "frame_image.h"
 #include "io/import.h"
 #include "io/mission.h"
+#include "io/run_record.h"
 #include "map_view.h"
 #include "pipeline/reconstruction.h"
 #include "reconstruction_runner.h"
@@ -34,7 +35,9 @@ class QProgressBar;
 class QProgressDialog;
 
 namespace sonarcarve::widgets {
+class AccuracyPanel;
 class FanView;
+class RunHistoryPanel;
 class FrameTimeline;
 class MapView;
 class ParamsPanel;
@@ -88,6 +91,10 @@ class MainWindow : public QMainWindow {
   void playRun();
   void cancelRun();
   void setPaused(bool paused);
+  /// Restores run `index`'s parameters (of the history) and runs them again.
+  void goBackToRun(int index);
+  /// Asks for the 3D view's clip box and cross-section.
+  void editClip();
 
   // For tests and the screenshot option.
   ReconstructionRunner& runner() { return *runner_; }
@@ -96,6 +103,9 @@ class MainWindow : public QMainWindow {
   widgets::FrameTimeline& timeline() { return *timeline_; }
   std::shared_ptr<const ReconstructionResult> lastResult() const { return result_; }
   const Mission* mission() const { return mission_.get(); }
+  widgets::AccuracyPanel& accuracyPanel() { return *accuracy_panel_; }
+  widgets::RunHistoryPanel& runHistoryPanel() { return *history_panel_; }
+  const std::vector<RunRecord>& runs() const { return runs_; }
   QString logText() const;
 
  signals:
@@ -103,6 +113,8 @@ class MainWindow : public QMainWindow {
   void runFailed(const QString& message);
   void importFinished(bool ok);
   void noiseModelLearned(bool ok);
+  /// The last run measured against the ground truth (the accuracy panel shows it).
+  void accuracyMeasured(double fscore);
 
  protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
@@ -137,12 +149,16 @@ class MainWindow : public QMainWindow {
   void addRecent(const QString& path);
   void fillRecentMenu();
   void updateRunActions();
+  void recordRun(const ReconstructionResult& result);
+  void measureAccuracy(const ReconstructionResult& result);
   Session currentSession() const;
 
   ThreadPool pool_;  // the workbench's one pool; it outlives the jobs that use it
   std::unique_ptr<ReconstructionRunner> runner_;
   std::shared_ptr<const Mission> mission_;
   std::shared_ptr<const MeshDistance> truth_;
+  std::shared_ptr<const Scene> truth_mesh_;
+  std::vector<RunRecord> runs_;  // this mission's runs, oldest first (kept in the session)
   std::shared_ptr<const ReconstructionResult> result_;
   std::shared_ptr<const Detector> detector_;
   std::shared_ptr<const NoiseModel> noise_model_;
@@ -155,6 +171,8 @@ class MainWindow : public QMainWindow {
   widgets::MapView* map_view_ = nullptr;
   widgets::TrackView* track_view_ = nullptr;
   widgets::ParamsPanel* params_panel_ = nullptr;
+  widgets::AccuracyPanel* accuracy_panel_ = nullptr;
+  widgets::RunHistoryPanel* history_panel_ = nullptr;
   QPlainTextEdit* log_ = nullptr;
   QProgressBar* progress_bar_ = nullptr;
   QLabel* progress_label_ = nullptr;
@@ -181,6 +199,7 @@ class MainWindow : public QMainWindow {
   BackgroundJob frame_job_;
   BackgroundJob import_job_;
   BackgroundJob learn_job_;
+  BackgroundJob accuracy_job_;
   QPointer<QProgressDialog> import_dialog_;
 };
 

@@ -28,7 +28,7 @@ class JobObserver : public ReconstructionObserver {
     std::vector<widgets::MapViewBlock> blocks;
     blocks.reserve(update.blocks.size());
     for (const MapBlockUpdate& b : update.blocks) {
-      widgets::MapViewBlock view{b.block, b.points, b.values, {}};
+      widgets::MapViewBlock view{b.block, b.points, b.values, {}, update.frames_done};
       if (truth_ && !b.points.empty()) {
         view.errors_m = errorsOf(b.points);
       }
@@ -93,6 +93,7 @@ int ReconstructionRunner::start(RunRequest request) {
   struct Outcome {
     std::shared_ptr<const ReconstructionResult> result;
     std::vector<float> surface_errors_m;
+    std::vector<float> mesh_errors_m;
   };
   // Runs on the GUI thread, for the current job only (BackgroundJob drops superseded ones).
   const auto current = [this] { return job_.currentJob(); };
@@ -117,14 +118,15 @@ int ReconstructionRunner::start(RunRequest request) {
         auto result = std::make_shared<const ReconstructionResult>(
             Pipeline(*request.mission, request.params, pool_)
                 .run(progress, &observer, kMapUpdateFrames));
-        std::vector<float> errors;
+        Outcome outcome{result, {}, {}};
         if (request.truth && !result->cancelled) {
-          errors = request.truth->distances(positionsOf(result->surface));
+          outcome.surface_errors_m = request.truth->distances(positionsOf(result->surface));
+          outcome.mesh_errors_m = request.truth->distances(result->mesh.vertices);
         }
-        return Outcome{result, std::move(errors)};
+        return outcome;
       },
       [this, current](Outcome outcome) {
-        emit finished(current(), outcome.result, outcome.surface_errors_m);
+        emit finished(current(), outcome.result, outcome.surface_errors_m, outcome.mesh_errors_m);
       },
       [this, current](const JobError& error) { emit failed(current(), error.message); },
       [this, current](const QString& stage, std::size_t done, std::size_t total) {

@@ -55,9 +55,11 @@ class ReconstructionRunner : public QObject {
   void blocksChanged(int job, const std::vector<widgets::MapViewBlock>& blocks);
   void frameCarved(int job, qulonglong frame_index);
   void frameSkipped(int job, const QString& message);
-  /// `surface_errors_m`: each surface point's distance to the truth (empty without one).
+  /// `surface_errors_m`, `mesh_errors_m`: each surface point's and mesh vertex's distance to
+  /// the truth (empty without one).
   void finished(int job, std::shared_ptr<const ReconstructionResult> result,
-                const std::vector<float>& surface_errors_m);
+                const std::vector<float>& surface_errors_m,
+                const std::vector<float>& mesh_errors_m);
   void failed(int job, const QString& message);
 
  private:

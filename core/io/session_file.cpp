@@ -29,6 +29,65 @@ Eigen::Vector3d vector3(const YamlFields& f, const YAML::Node& camera, const std
   return {v[0], v[1], v[2]};
 }
 
+YAML::Node runNode(const RunRecord& run) {
+  YAML::Node n;
+  n["started"] = run.started;
+  n["frames"] = run.frames;
+  n["occupied_voxels"] = run.occupied_voxels;
+  n["surface_points"] = run.surface_points;
+  n["mesh_triangles"] = run.mesh_triangles;
+  n["seconds"] = run.seconds;
+  if (run.accuracy) {
+    YAML::Node a;
+    a["fscore"] = run.accuracy->fscore;
+    a["median_m"] = run.accuracy->median_m;
+    a["p90_m"] = run.accuracy->p90_m;
+    a["precision"] = run.accuracy->precision;
+    a["completeness"] = run.accuracy->completeness;
+    n["accuracy"] = a;
+  }
+  n["params"] = YAML::Load(run.params.toYaml());
+  return n;
+}
+
+std::size_t count(const YamlFields& f, const YAML::Node& node, const std::string& path) {
+  const double v = f.number(node, path);
+  if (!(v >= 0.0 && v <= 1e15)) {
+    f.fail(node, path, "expected a count from 0 to 1e15");
+  }
+  return static_cast<std::size_t>(v);
+}
+
+RunRecord runOf(const YamlFields& f, const YAML::Node& n, const std::string& path,
+                const std::string& file) {
+  if (!n.IsMap()) {
+    f.fail(n, path, "expected a run (a mapping)");
+  }
+  RunRecord run;
+  if (n["started"]) {
+    run.started = f.text(n["started"], path + ".started");
+  }
+  run.frames = count(f, f.child(n, path, "frames"), path + ".frames");
+  run.occupied_voxels = count(f, f.child(n, path, "occupied_voxels"), path + ".occupied_voxels");
+  run.surface_points = count(f, f.child(n, path, "surface_points"), path + ".surface_points");
+  if (n["mesh_triangles"]) {
+    run.mesh_triangles = count(f, n["mesh_triangles"], path + ".mesh_triangles");
+  }
+  run.seconds = f.number(f.child(n, path, "seconds"), path + ".seconds");
+  if (const YAML::Node a = n["accuracy"]) {
+    const std::string at = path + ".accuracy";
+    RunAccuracy accuracy;
+    accuracy.fscore = f.number(f.child(a, at, "fscore"), at + ".fscore");
+    accuracy.median_m = f.number(f.child(a, at, "median_m"), at + ".median_m");
+    accuracy.p90_m = f.number(f.child(a, at, "p90_m"), at + ".p90_m");
+    accuracy.precision = f.number(f.child(a, at, "precision"), at + ".precision");
+    accuracy.completeness = f.number(f.child(a, at, "completeness"), at + ".completeness");
+    run.accuracy = accuracy;
+  }
+  run.params = ReconstructionParams::fromYamlNode(f.child(n, path, "params"), file);
+  return run;
+}
+
 }  // namespace
 
 void saveSession(const Session& s, const std::filesystem::path& file) {
@@ -47,6 +106,13 @@ void saveSession(const Session& s, const std::filesystem::path& file) {
   camera["view_angle_deg"] = s.camera.view_angle_deg;
   root["camera"] = camera;
   root["params"] = YAML::Load(s.params.toYaml());
+  if (!s.runs.empty()) {
+    YAML::Node runs(YAML::NodeType::Sequence);
+    for (const RunRecord& run : s.runs) {
+      runs.push_back(runNode(run));
+    }
+    root["runs"] = runs;
+  }
   YAML::Emitter out;
   out.SetDoublePrecision(17);
   out << root;
@@ -86,6 +152,14 @@ Session loadSession(const std::filesystem::path& file) {
   }
   if (const YAML::Node params = root["params"]) {
     s.params = ReconstructionParams::fromYamlNode(params, file.string());
+  }
+  if (const YAML::Node runs = root["runs"]) {
+    if (!runs.IsSequence()) {
+      f.fail(runs, "runs", "expected a list of runs");
+    }
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      s.runs.push_back(runOf(f, runs[i], "runs[" + std::to_string(i) + "]", file.string()));
+    }
   }
   return s;
 }

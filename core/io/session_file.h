@@ -8,12 +8,19 @@
 //   camera: {position: [n, e, d], focal_point: [...], view_up: [...], parallel: false,
 //            parallel_scale: 1, view_angle_deg: 30}
 //   params: {...}
+//   runs:                 (optional: the run history, oldest first)
+//     - {started: "2026-11-24 23:10:05", frames: 98, occupied_voxels: 41234, surface_points:
+//        9000, mesh_triangles: 20000, seconds: 9.8, params: {...},
+//        accuracy: {fscore: 0.94, median_m: 0.005, p90_m: 0.013, precision: 0.95,
+//                   completeness: 0.93}}        (accuracy only with a ground truth)
 #pragma once
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "io/camera_state.h"
+#include "io/run_record.h"
 #include "pipeline/reconstruction_params.h"
 
 namespace sonarcarve {
@@ -24,6 +31,7 @@ struct Session {
   CameraState camera;
   int frame = 0;
   std::string colour_by = "intensity";
+  std::vector<RunRecord> runs;
 };
 
 /// Writes atomically; throws Error if the file cannot be written.

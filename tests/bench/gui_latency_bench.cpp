@@ -1,8 +1,12 @@
 // Event-loop latency of the workbench while it carves: the GUI thread must never block for
 // more than 50 ms. A 5 ms timer runs on the GUI thread from the start of the run to its end;
 // every gap between two ticks beyond the 5 ms is time the event loop could not answer.
-//   sonarcarve_gui_latency_bench MISSION [--noise-model N.yaml] [--json] [--trace]
-// --trace names every event that took 20 ms or more (nested events are listed too).
+//   sonarcarve_gui_latency_bench MISSION [--noise-model N.yaml] [--params P.yaml] [--runs N]
+//                                [--json] [--trace]
+// --trace names every event that took 20 ms or more (nested events are listed too). With
+// --runs N the mission runs N times (a re-run as a parameter change starts it); the resident
+// memory is printed after each run, and at the end the time to close and destroy the window
+// (what quitting costs after the last run).
 // Run it under Xvfb (xvfb-run -a -s '-screen 0 1280x800x24'); it prints the worst gap, the
 // 99th percentile and the run's duration. It asserts nothing: figures go to docs/benchmarks.md.
 #include <QApplication>
@@ -10,6 +14,9 @@
 #include <QTimer>
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "main_window.h"
@@ -43,6 +50,18 @@ class TimedApplication : public QApplication {
   }
 };
 
+// The process's resident memory, MB (Linux).
+double residentMb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) {
+      return std::stod(line.substr(6)) / 1024.0;
+    }
+  }
+  return 0.0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -53,7 +72,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   bool json = false;
+  int runs = 1;
   QString noise_model;
+  QString params_file;
   for (int i = 2; i < argc; ++i) {
     const QString arg = argv[i];
     if (arg == "--json") {
@@ -62,9 +83,17 @@ int main(int argc, char** argv) {
       app.trace = true;
     } else if (arg == "--noise-model" && i + 1 < argc) {
       noise_model = argv[++i];
+    } else if (arg == "--params" && i + 1 < argc) {
+      params_file = argv[++i];
+    } else if (arg == "--runs" && i + 1 < argc) {
+      runs = std::max(1, QString(argv[++i]).toInt());
     }
   }
-  sonarcarve::gui::MainWindow window;
+  auto owned = std::make_unique<sonarcarve::gui::MainWindow>();
+  sonarcarve::gui::MainWindow& window = *owned;
+  if (!params_file.isEmpty()) {
+    window.setParams(sonarcarve::ReconstructionParams::fromYamlFile(params_file.toStdString()));
+  }
   if (!noise_model.isEmpty()) {
     auto p = window.paramsPanel().params();
     p.noise_model = noise_model.toStdString();
@@ -91,7 +120,16 @@ int main(int argc, char** argv) {
     status = ok ? 0 : 1;
     QApplication::quit();
   };
-  QObject::connect(&window, &sonarcarve::gui::MainWindow::runFinished, [&] { stop(true); });
+  int finished_runs = 0;
+  QObject::connect(&window, &sonarcarve::gui::MainWindow::runFinished, [&] {
+    ++finished_runs;
+    std::fprintf(stderr, "run %d finished: resident memory %.0f MB\n", finished_runs, residentMb());
+    if (finished_runs < runs) {
+      QTimer::singleShot(0, &window, [&window] { window.startRun(); });
+    } else {
+      stop(true);
+    }
+  });
   QObject::connect(&window, &sonarcarve::gui::MainWindow::runFailed, [&] { stop(false); });
   // Once the window is up, open the mission (which starts the run).
   QTimer::singleShot(500, [&] {
@@ -106,6 +144,13 @@ int main(int argc, char** argv) {
     ticker.start();
   });
   app.exec();
+  QElapsedTimer quit_clock;
+  quit_clock.start();
+  owned->close();
+  owned.reset();
+  std::fprintf(stderr,
+               "closing and destroying the window: %lld ms (resident memory then %.0f MB)\n",
+               static_cast<long long>(quit_clock.elapsed()), residentMb());
   if (gaps_ms.empty()) {
     std::fprintf(stderr, "no measurement\n");
     return 1;

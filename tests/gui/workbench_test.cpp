@@ -5,6 +5,7 @@
 #include <QDoubleSpinBox>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -12,14 +13,19 @@
 #include <functional>
 #include <set>
 
+#include "accuracy_panel.h"
+#include "eval/evaluator.h"
 #include "frame_timeline.h"
+#include "geometry/scene_io.h"
 #include "gui_conventions.h"
 #include "io/point_cloud_ply.h"
 #include "io/session_file.h"
 #include "main_window.h"
 #include "map_view.h"
+#include "occlusion/surface_points.h"
 #include "params_panel.h"
 #include "pipeline/reconstruction.h"
+#include "run_history_panel.h"
 #include "sim/demo_scenes.h"
 #include "sim/simulation_run.h"
 #include "support/cli_runner.h"
@@ -503,7 +509,8 @@ class WorkbenchTest : public QObject {
     window.setColourBy(sonarcarve::widgets::MapView::ColourBy::Error);
     QCOMPARE(window.mapView().legendText(), QString("error vs ground truth (cm): 0.00 to 10.00"));
     window.chooseLayer(sonarcarve::widgets::MapView::Layer::Mesh);
-    QVERIFY(window.mapView().legendText().isEmpty());  // the mesh is not coloured by a value
+    QCOMPARE(window.mapView().legendText(),  // the mesh is coloured like the points
+             QString("error vs ground truth (cm): 0.00 to 10.00"));
 
     // The axes triad: from the top, north is up and east right, down points away; from the
     // south, down is down and east right, north points away.
@@ -544,6 +551,118 @@ class WorkbenchTest : public QObject {
     const QString distance =
         QString("%1 m from the previous pick").arg((picked_other - picked).norm(), 0, 'f', 3);
     QVERIFY2(window.logText().contains(distance), qPrintable(window.logText()));
+  }
+
+  // With a ground truth, a finished run is measured by core's evaluator off the GUI thread and
+  // the accuracy panel shows its figures; without one the panel says so.
+  void accuracyPanelShowsTheRunsFigures() {
+    MainWindow window;
+    window.show();
+    QSignalSpy measured(&window, &MainWindow::accuracyMeasured);
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    const auto result = waitForResult(window, 120000);
+    QVERIFY(result);
+    QVERIFY(measured.wait(60000));
+    sonarcarve::ThreadPool pool;
+    const auto expected =
+        sonarcarve::evaluate(sonarcarve::positionsOf(result->surface),
+                             sonarcarve::loadSceneMesh(mission() / "ground_truth.ply"),
+                             sonarcarve::readPointsPly(mission() / "visible_points.ply"), pool);
+    QCOMPARE(measured.front().front().toDouble(), expected.fscore);
+    const QString text = window.accuracyPanel().text();
+    QVERIFY2(text.contains(QString("F-score at 5 cm: %1").arg(expected.fscore, 0, 'f', 3)),
+             qPrintable(text));
+    QVERIFY(text.contains(
+        QString("median error: %1 cm").arg(100.0 * expected.accuracy_median_m, 0, 'f', 2)));
+    QVERIFY(text.contains(
+        QString("90th percentile error: %1 cm").arg(100.0 * expected.accuracy_p90_m, 0, 'f', 2)));
+    QVERIFY(text.contains(QString("completeness (truth within 5 cm): %1 %")
+                              .arg(100.0 * expected.completeness, 0, 'f', 1)));
+    QVERIFY(text.contains(QString("precision (points within 5 cm): %1 %")
+                              .arg(100.0 * expected.precision, 0, 'f', 1)));
+    QVERIFY(window.runs().back().accuracy);
+    QCOMPARE(window.runs().back().accuracy->fscore, expected.fscore);
+
+    // The same mission without its ground truth: no figures, and the panel says why.
+    const fs::path bare = scratch_->path() / "riser_no_truth";
+    fs::copy(mission(), bare, fs::copy_options::recursive);
+    fs::remove(bare / "ground_truth.ply");
+    QVERIFY(window.openMission(QString::fromStdString(bare.string())));
+    QVERIFY(waitForResult(window, 120000));
+    QVERIFY(window.accuracyPanel().text().startsWith("No ground truth"));
+    QVERIFY(!window.runs().back().accuracy);
+  }
+
+  // Each run is kept with its parameters and figures; two are compared by what differs; going
+  // back restores one run's parameters and runs them again; the session keeps the history.
+  void runHistoryComparesAndGoesBack() {
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    const auto first = waitForResult(window, 120000);
+    QVERIFY(first);
+    auto params = window.paramsPanel().params();
+    const double voxel = params.carve.voxel_size_m;
+    params.carve.voxel_size_m = 1.5 * voxel;
+    window.setParams(params);
+    window.startRun();
+    const auto second = waitForResult(window, 120000);
+    QVERIFY(second);
+    QCOMPARE(window.runs().size(), std::size_t{2});
+    QCOMPARE(window.runHistoryPanel().rowCount(), 2);
+    QCOMPARE(window.runs()[0].occupied_voxels, first->occupied_voxels);
+    QCOMPARE(window.runs()[1].surface_points, second->surface.size());
+    QCOMPARE(window.runs()[1].params.carve.voxel_size_m, 1.5 * voxel);
+
+    const QString html =
+        sonarcarve::widgets::RunHistoryPanel::comparison(window.runs()[0], 0, window.runs()[1], 1);
+    QVERIFY(html.contains("voxel_size_m (m)"));
+    QVERIFY(html.contains(QString::number(first->occupied_voxels)));
+    QVERIFY(html.contains(QString::number(second->occupied_voxels)));
+    QVERIFY(!html.contains("detector.z"));  // the same in both
+
+    const fs::path file = scratch_->path() / "history.sonarcarve";
+    QVERIFY(window.saveSession(QString::fromStdString(file.string())));
+    QCOMPARE(sonarcarve::loadSession(file).runs.size(), std::size_t{2});
+
+    window.runHistoryPanel().selectRuns({0});
+    QPushButton* go_back = nullptr;
+    for (auto* button : window.runHistoryPanel().findChildren<QPushButton*>()) {
+      if (button->text().startsWith("Go back")) {
+        go_back = button;
+      }
+    }
+    QVERIFY(go_back && go_back->isEnabled());
+    go_back->click();
+    QCOMPARE(window.paramsPanel().params().carve.voxel_size_m, voxel);
+    const auto third = waitForResult(window, 120000);
+    QVERIFY(third);
+    QCOMPARE(third->occupied_voxels, first->occupied_voxels);
+    QCOMPARE(window.runs().size(), std::size_t{3});
+
+    MainWindow reopened;
+    QVERIFY(reopened.openSession(QString::fromStdString(file.string())));
+    QVERIFY(waitForResult(reopened, 120000));
+    QCOMPARE(reopened.runs().size(), std::size_t{3});  // the two saved and the one it ran
+    QCOMPARE(reopened.runHistoryPanel().rowCount(), 3);
+  }
+
+  // The window keeps its last run (map, surface, mesh) until the next run starts, and then
+  // nothing holds it any more: its memory is released, not kept until quitting.
+  void aRunIsReleasedWhenTheNextStarts() {
+    MainWindow window;
+    window.show();
+    QSignalSpy measured(&window, &MainWindow::accuracyMeasured);
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    std::weak_ptr<const ReconstructionResult> first = waitForResult(window, 120000);
+    QVERIFY(!first.expired());  // the window's
+    QVERIFY(measured.wait(60000));
+    QCOMPARE(first.use_count(), 1L);  // the window's only
+    window.startRun();
+    QVERIFY(first.expired());
+    std::weak_ptr<const ReconstructionResult> second = waitForResult(window, 120000);
+    QVERIFY(!second.expired());
+    QVERIFY(window.mapView().mapPointCount() > 0);
   }
 
   // What a save dialog returns gets the extension of what it saves, unless it has it.

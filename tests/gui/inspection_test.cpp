@@ -1,0 +1,277 @@
+// The 3D view's inspection tools on data made here, under Xvfb (the view needs OpenGL): the
+// scale bar follows the zoom, the clip box and the cross-section draw only what lies in them,
+// and the mesh is coloured by the chosen value.
+#include <QDoubleSpinBox>
+#include <QtTest>
+#include <cmath>
+
+#include "clip_dialog.h"
+#include "map_view.h"
+#include "scale_bar.h"
+#include "vtk_gl_widget.h"
+
+using sonarcarve::widgets::ClipDialog;
+using sonarcarve::widgets::MapView;
+using sonarcarve::widgets::MapViewBlock;
+using sonarcarve::widgets::ScaleBar;
+using sonarcarve::widgets::ViewClip;
+
+namespace {
+
+constexpr int kSide = 21;  // points along each axis, every 0.1 m from 0 to 2 m
+
+// A cube of points split into blocks along north, valued by their index.
+std::vector<MapViewBlock> cubeBlocks() {
+  std::vector<MapViewBlock> blocks(kSide);
+  for (int n = 0; n < kSide; ++n) {
+    blocks[static_cast<std::size_t>(n)].block = static_cast<std::size_t>(n);
+    for (int e = 0; e < kSide; ++e) {
+      for (int d = 0; d < kSide; ++d) {
+        blocks[static_cast<std::size_t>(n)].points.emplace_back(0.1f * n, 0.1f * e, 0.1f * d);
+        blocks[static_cast<std::size_t>(n)].values.push_back(static_cast<float>(n + e + d));
+      }
+    }
+  }
+  return blocks;
+}
+
+std::size_t countInside(const std::vector<MapViewBlock>& blocks, const ViewClip& clip) {
+  std::size_t n = 0;
+  for (const auto& b : blocks) {
+    for (const auto& p : b.points) {
+      n += clip.contains(p) ? 1 : 0;
+    }
+  }
+  return n;
+}
+
+bool allInside(const std::vector<Eigen::Vector3f>& points, const ViewClip& clip) {
+  return std::all_of(points.begin(), points.end(),
+                     [&](const Eigen::Vector3f& p) { return clip.contains(p); });
+}
+
+// Two upright squares (2 m wide in east, 0.5 m tall in depth, wound to face north) of two triangles
+// each, one from depth `d0` and one from `d1`, 4 m apart in east.
+sonarcarve::Mesh twoSquares(float d0, float d1) {
+  sonarcarve::Mesh mesh;
+  for (float d : {d0, d1}) {
+    const float e0 = d == d0 ? -3.0f : 1.0f;
+    const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
+    for (const auto& [e, dd] : {std::pair{0.0f, 0.0f}, {2.0f, 0.0f}, {2.0f, 0.5f}, {0.0f, 0.5f}}) {
+      mesh.vertices.emplace_back(0.0f, e0 + e, d + dd);
+      mesh.normals.emplace_back(1.0f, 0.0f, 0.0f);  // as the winding has it
+      mesh.intensity.push_back(d == d0 ? 10.0f : 1000.0f);
+    }
+    mesh.triangles.push_back({first, first + 1, first + 2});
+    mesh.triangles.push_back({first, first + 2, first + 3});
+  }
+  return mesh;
+}
+
+double metresPerPixelMeasured(MapView& view) {
+  // One metre across the view at the focal point, on the screen.
+  const sonarcarve::CameraState c = view.cameraState();
+  const Eigen::Vector3d focal = c.focal_point;
+  const Eigen::Vector3d direction = (focal - c.position).normalized();
+  const Eigen::Vector3d right = direction.cross(c.view_up).normalized();
+  const QPoint a = view.screenPositionOf(focal - 0.5 * right);
+  const QPoint b = view.screenPositionOf(focal + 0.5 * right);
+  return 1.0 / QLineF(a, b).length();
+}
+
+bool isRound(double metres) {
+  const double mantissa = metres / std::pow(10.0, std::floor(std::log10(metres) + 1e-9));
+  return std::abs(mantissa - 1.0) < 1e-6 || std::abs(mantissa - 2.0) < 1e-6 ||
+         std::abs(mantissa - 5.0) < 1e-6;
+}
+
+}  // namespace
+
+class InspectionTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void roundLengths() {
+    QCOMPARE(ScaleBar::roundLength(1.3), 1.0);
+    QCOMPARE(ScaleBar::roundLength(0.7), 0.5);
+    QCOMPARE(ScaleBar::roundLength(0.5), 0.5);
+    QCOMPARE(ScaleBar::roundLength(37.0), 20.0);
+    QCOMPARE(ScaleBar::roundLength(0.0), 0.0);
+    ScaleBar bar;
+    bar.setMetresPerPixel(0.004);  // 120 px = 0.48 m: a 20 cm bar of 50 px
+    QCOMPARE(bar.text(), QString("20 cm"));
+    QCOMPARE(bar.barPixels(), 50);
+  }
+
+  // The bar is a round length, as long on the screen as that length at the focal point, and
+  // follows the zoom, in perspective and in parallel projection.
+  void scaleBarFollowsTheZoom() {
+    MapView view;
+    view.resize(900, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.applyBlocks(cubeBlocks());
+    view.flush();
+    QTest::qWait(50);
+    const ScaleBar& bar = view.scaleBar();
+    for (bool parallel : {false, true}) {
+      view.setOrthographic(parallel);
+      for (double closer : {1.0, 2.0, 5.0}) {
+        sonarcarve::CameraState c = view.cameraState();
+        c.position = c.focal_point + (c.position - c.focal_point) / closer;
+        c.parallel_scale /= closer;
+        view.setCameraState(c);
+        const double measured = metresPerPixelMeasured(view);
+        QVERIFY2(std::abs(bar.metresPerPixel() / measured - 1.0) < 0.02,
+                 qPrintable(QString("%1 vs %2").arg(bar.metresPerPixel()).arg(measured)));
+        QVERIFY(bar.isVisible());
+        QVERIFY(isRound(bar.lengthMetres()));
+        QVERIFY(bar.barPixels() >= 2 * ScaleBar::kMaxBarPixels / 5 - 1);
+        QVERIFY(bar.barPixels() <= ScaleBar::kMaxBarPixels);
+      }
+    }
+  }
+
+  // Only the points inside the box and the slab are drawn, on the map and the surface; the
+  // mesh keeps the triangles whose centre is inside; an inactive clip draws everything again.
+  void clipBoxAndCrossSectionDrawOnlyWhatIsInside() {
+    MapView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const auto blocks = cubeBlocks();
+    view.applyBlocks(blocks);
+    view.flush();
+    QCOMPARE(view.drawnPointCount(), std::size_t{kSide * kSide * kSide});
+
+    ViewClip clip;
+    clip.box =
+        Eigen::AlignedBox3d(Eigen::Vector3d(0.45, 0.45, 0.45), Eigen::Vector3d(1.55, 1.05, 2.5));
+    view.setClip(clip);
+    QCOMPARE(view.drawnPointCount(), std::size_t{11 * 6 * 16});
+    QCOMPARE(view.drawnPointCount(), countInside(blocks, clip));
+    QVERIFY(allInside(view.drawnPoints(), clip));
+
+    clip.section = ViewClip::Section{ViewClip::Axis::East, 0.8, 0.15};  // east 0.8 only
+    view.setClip(clip);
+    QCOMPARE(view.drawnPointCount(), std::size_t{11 * 16});
+    QVERIFY(allInside(view.drawnPoints(), clip));
+    for (const auto& p : view.drawnPoints()) {
+      QVERIFY(std::abs(p.y() - 0.8f) < 1e-4f);
+    }
+
+    ViewClip section_only;  // a horizontal slice at 1 m depth
+    section_only.section = ViewClip::Section{ViewClip::Axis::Down, 1.0, 0.05};
+    view.setClip(section_only);
+    QCOMPARE(view.drawnPointCount(), std::size_t{kSide * kSide});
+
+    MapViewBlock surface;
+    for (const auto& b : blocks) {
+      surface.points.insert(surface.points.end(), b.points.begin(), b.points.end());
+      surface.values.insert(surface.values.end(), b.values.begin(), b.values.end());
+    }
+    view.setSurface(surface);
+    view.setLayer(MapView::Layer::Surface);
+    QCOMPARE(view.drawnPointCount(), std::size_t{kSide * kSide});
+    QVERIFY(allInside(view.drawnPoints(), section_only));
+
+    view.setMesh(twoSquares(0.0f, 10.0f));
+    view.setLayer(MapView::Layer::Mesh);
+    QCOMPARE(view.drawnTriangleCount(), std::size_t{0});  // neither square at 1 m depth
+    ViewClip shallow;
+    shallow.box = Eigen::AlignedBox3d(Eigen::Vector3d(-10, -10, -1), Eigen::Vector3d(10, 10, 1));
+    view.setClip(shallow);
+    QCOMPARE(view.drawnTriangleCount(), std::size_t{2});
+
+    view.setClip(ViewClip{});
+    QCOMPARE(view.drawnTriangleCount(), std::size_t{4});
+    view.setLayer(MapView::Layer::Map);
+    QCOMPARE(view.drawnPointCount(), std::size_t{kSide * kSide * kSide});
+  }
+
+  // While carving, blocks changed within the last kSettleFrames frames are drawn apart
+  // (translucent) from the settled ones; when the run ends everything is settled.
+  void provisionalVoxelsAreDrawnApart() {
+    MapView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setLive(true);
+    auto blocks = cubeBlocks();
+    for (auto& b : blocks) {
+      b.frames_done = 4;
+    }
+    view.applyBlocks(blocks);
+    view.flush();
+    QCOMPARE(view.provisionalPointCount(), std::size_t{kSide * kSide * kSide});
+    QCOMPARE(view.settledPointCount(), std::size_t{0});
+    QVERIFY(!view.legendText().isEmpty());
+    // Frames 5 to 12 changed the blocks north of 1 m only.
+    std::vector<MapViewBlock> later(blocks.begin() + 11, blocks.end());
+    for (auto& b : later) {
+      b.frames_done = 4 + MapView::kSettleFrames;
+    }
+    view.applyBlocks(later);
+    view.flush();
+    QCOMPARE(view.provisionalPointCount(), std::size_t{10 * kSide * kSide});
+    QCOMPARE(view.settledPointCount(), std::size_t{11 * kSide * kSide});
+    QCOMPARE(view.drawnPointCount(), std::size_t{kSide * kSide * kSide});
+    view.setLive(false);
+    view.flush();
+    QCOMPARE(view.provisionalPointCount(), std::size_t{0});
+    QCOMPARE(view.settledPointCount(), std::size_t{kSide * kSide * kSide});
+  }
+
+  // The dialog starts from the clip in force and gives back what was typed.
+  void clipDialogRoundTrips() {
+    ViewClip clip;
+    clip.box = Eigen::AlignedBox3d(Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6));
+    clip.section = ViewClip::Section{ViewClip::Axis::Down, 4.5, 0.2};
+    ClipDialog dialog(clip, Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()));
+    ViewClip back = dialog.clip();
+    QVERIFY(back.box && back.box->isApprox(*clip.box));
+    QVERIFY(back.section && back.section->axis == ViewClip::Axis::Down);
+    QCOMPARE(back.section->position_m, 4.5);
+    dialog.findChild<QDoubleSpinBox*>("max_1")->setValue(7.5);
+    back = dialog.clip();
+    QCOMPARE(back.box->max().y(), 7.5);
+  }
+
+  // The mesh takes the colouring of the points: by depth its shallow square is the colour
+  // table's low end (violet) and its deep one the high end (yellow); the key says so.
+  void meshIsColouredByTheChosenValue() {
+    MapView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const sonarcarve::Mesh mesh = twoSquares(0.0f, 2.0f);
+    view.setMesh(mesh, {0.0f, 0.0f, 0.0f, 0.0f, 0.1f, 0.1f, 0.1f, 0.1f});
+    view.setLayer(MapView::Layer::Mesh);
+    view.viewFromSide();  // from the south: east to the right, down downwards
+    view.setColourBy(MapView::ColourBy::Depth);
+    QCOMPARE(view.legendText(), QString("depth (m): 0.00 to 2.50"));
+    QImage image = view.grabImage();
+    const QColor shallow = image.pixelColor(view.screenPositionOf({0.0, -2.0, 0.25}));
+    const QColor deep = image.pixelColor(view.screenPositionOf({0.0, 2.0, 2.25}));
+    QVERIFY2(shallow.blue() > shallow.green() && deep.green() > deep.blue(),
+             qPrintable(QString("shallow %1, deep %2").arg(shallow.name(), deep.name())));
+    view.setColourBy(MapView::ColourBy::Intensity);
+    QVERIFY(view.legendText().startsWith("intensity (counts): 0 to "));
+    view.setColourBy(MapView::ColourBy::Error);
+    QCOMPARE(view.legendText(), QString("error vs ground truth (cm): 0.00 to 10.00"));
+    image = view.grabImage();
+    const QColor on_truth = image.pixelColor(view.screenPositionOf({0.0, -2.0, 0.25}));
+    const QColor off_truth = image.pixelColor(view.screenPositionOf({0.0, 2.0, 2.25}));
+    QVERIFY2(on_truth.green() > on_truth.red() && off_truth.red() > off_truth.green(),
+             qPrintable(QString("on %1, off %2").arg(on_truth.name(), off_truth.name())));
+  }
+};
+
+int main(int argc, char** argv) {
+  sonarcarve::widgets::VtkGlWidget::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  InspectionTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "inspection_test.moc"
