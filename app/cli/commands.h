@@ -24,5 +24,6 @@ void addExportCommand(CLI::App& app, int& exit_code);
 void addImportCommand(CLI::App& app, int& exit_code);
 void addParamsCommand(CLI::App& app, int& exit_code);
 void addNavErrorCommand(CLI::App& app, int& exit_code);
+void addMergeCommand(CLI::App& app, int& exit_code);
 
 }  // namespace sonarcarve::cli

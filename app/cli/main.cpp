@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   sonarcarve::cli::addExportCommand(app, exit_code);
   sonarcarve::cli::addNoiseModelCommand(app, exit_code);
   sonarcarve::cli::addNavErrorCommand(app, exit_code);
+  sonarcarve::cli::addMergeCommand(app, exit_code);
   sonarcarve::cli::addImportCommand(app, exit_code);
   sonarcarve::cli::addBenchCommand(app, pool, exit_code);
   try {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "carve/map_file.h"
 #include "carve/occupancy_export.h"
 #include "cli/commands.h"
 #include "cli/param_flags.h"
@@ -33,6 +34,7 @@ struct ReconstructOptions {
   std::string params_file;
   std::shared_ptr<ParamFlags> flags;
   SourceFlags source;
+  bool save_map = false;
 };
 
 // The --params file (or the defaults), then the flags on top.
@@ -49,16 +51,20 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
 // when this run ends (io/run_manifest.h), so that `export` cannot take it for this run's.
 const std::vector<std::string> kOutputs = {"surface_points.ply", "map.bt",      "mesh.ply",
                                            "mesh.stl",           "params.yaml", "report.json",
-                                           "refined_nav.csv"};
+                                           "refined_nav.csv",    "map.scmap"};
 
 void writeOutputs(const std::filesystem::path& out, const Mission& mission,
                   const ReconstructionParams& params, const ReconstructionResult& result,
-                  const std::string& report, RunManifest& manifest) {
+                  const std::string& report, bool save_map, RunManifest& manifest) {
   writeSurfacePointsPly(result.surface, out / "surface_points.ply");
   manifest.wrote("surface_points.ply");
   if (result.map) {
     writeOccupancyBt(*result.map, out / "map.bt");
     manifest.wrote("map.bt");
+    if (save_map) {
+      saveMap(*result.map, out / "map.scmap");
+      manifest.wrote("map.scmap");
+    }
   }
   if (!result.mesh.triangles.empty()) {
     ExportOptions ply;
@@ -117,7 +123,7 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   const std::string report = reconstructionReport(mission, params, result, pool);
   RunManifest manifest(out, arguments, kOutputs);
   try {
-    writeOutputs(out, mission, params, result, report, manifest);
+    writeOutputs(out, mission, params, result, report, o.save_map, manifest);
   } catch (const Error& e) {
     try {
       manifest.finish("failed", e.what());
@@ -145,6 +151,8 @@ void addReconstructCommand(CLI::App& app, ThreadPool& pool,
   cmd->add_option("--out", o->out, "Output folder")->required();
   cmd->add_option("--params", o->params_file,
                   "Parameters YAML (as saved by the GUI or params.yaml)");
+  cmd->add_flag("--save-map", o->save_map,
+                "Also write DIR/map.scmap, the carved map itself (docs/formats.md), for `merge`");
   o->flags = addParamFlags(*cmd);
   addSourceFlags(*cmd, o->source);
   cmd->callback(
