@@ -35,6 +35,7 @@ struct ReconstructOptions {
   std::shared_ptr<ParamFlags> flags;
   SourceFlags source;
   bool save_map = false;
+  std::string load_map;
 };
 
 // The --params file (or the defaults), then the flags on top.
@@ -101,7 +102,10 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   const ReconstructionParams params = paramsFrom(o);
   // The pipeline checks its parameters and reads a given noise model: a bad one fails before
   // the output folder is made.
-  const Pipeline pipeline(mission, params, pool);
+  Pipeline pipeline(mission, params, pool);
+  if (!o.load_map.empty()) {
+    pipeline.startFrom(loadMap(o.load_map));
+  }
   const std::filesystem::path out(o.out);
   prepareOutputFolder(out);
   const OutputFolderLock lock(out);
@@ -153,6 +157,9 @@ void addReconstructCommand(CLI::App& app, ThreadPool& pool,
                   "Parameters YAML (as saved by the GUI or params.yaml)");
   cmd->add_flag("--save-map", o->save_map,
                 "Also write DIR/map.scmap, the carved map itself (docs/formats.md), for `merge`");
+  cmd->add_option("--load-map", o->load_map,
+                  "Start from a map carved before (map.scmap of --save-map, or of merge): this "
+                  "run's frames carve into it (fast engine)");
   o->flags = addParamFlags(*cmd);
   addSourceFlags(*cmd, o->source);
   cmd->callback(

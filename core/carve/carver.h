@@ -68,6 +68,10 @@ class Carver {
   /// The map as blocks with change stamps, for viewers' incremental updates and the OctoMap
   /// export; nullptr for engines that do not keep one.
   virtual const VoxelMap* blockMap() const { return nullptr; }
+  /// Starts from a map carved before (reconstruct --load-map): fuses it by the voxel-wise
+  /// minimum where it lies inside this map's box. Throws Error for engines that keep no
+  /// block map.
+  virtual void fuse(const VoxelMap& earlier);
 };
 
 /// Voxels and their values as two parallel arrays (what OcclusionResolver takes).

@@ -54,6 +54,11 @@ std::unique_ptr<Carver> makeCarver(CarverEngine key, const CarverSetup& setup) {
   return factory(setup);
 }
 
+void Carver::fuse(const VoxelMap&) {
+  throw Error("parameters", "engine",
+              "this engine cannot start from a saved map; use the fast engine");
+}
+
 VoxelValues collectVoxels(const std::function<void(const Carver::VoxelVisitor&)>& each) {
   VoxelValues collected;
   each([&](const Eigen::Vector3i& voxel, float value) {

@@ -2,6 +2,7 @@
 // FastCarver on the setup's pool.
 #include "carve/carver.h"
 #include "carve/fast_carver.h"
+#include "carve/map_file.h"
 #include "carve/voxel_map.h"
 
 namespace sonarcarve {
@@ -24,6 +25,7 @@ class FastEngine final : public Carver {
   }
   CarverStats stats() const override { return {map_.occupiedCount(), map_.memoryBytes()}; }
   const VoxelMap* blockMap() const override { return &map_; }
+  void fuse(const VoxelMap& earlier) override { fuseInto(map_, earlier); }
 
  private:
   VoxelMap map_;

@@ -70,6 +70,14 @@ void stored(VoxelMap& map, std::size_t b, const Values& values) {
   }
 }
 
+void requireOneGrid(const VoxelMap& a, const VoxelMap& b) {
+  if (a.voxelSize() != b.voxelSize()) {
+    throw Error("merge", "",
+                "the maps have voxels of " + std::to_string(a.voxelSize()) + " and " +
+                    std::to_string(b.voxelSize()) + " m: expected one grid");
+  }
+}
+
 template <typename T>
 void put(std::string& out, T value) {
   char bytes[sizeof(T)];
@@ -257,26 +265,41 @@ std::unique_ptr<VoxelMap> loadMap(const std::filesystem::path& path) {
   return map;
 }
 
-std::unique_ptr<VoxelMap> mergeMaps(const VoxelMap& a, const VoxelMap& b) {
-  if (a.voxelSize() != b.voxelSize()) {
-    throw Error("merge", "",
-                "the maps have voxels of " + std::to_string(a.voxelSize()) + " and " +
-                    std::to_string(b.voxelSize()) + " m: expected one grid");
+Eigen::AlignedBox3d voxelCentresBox(const VoxelMap& map) {
+  const Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5 * map.voxelSize());
+  const Eigen::AlignedBox3d box = map.bounds();
+  return {box.min() + half, box.max() - half};
+}
+
+void fuseInto(VoxelMap& target, const VoxelMap& source) {
+  requireOneGrid(target, source);
+  Values mine, theirs;
+  for (std::size_t n = 0; n < source.blockCount(); ++n) {
+    if (source.state(n) == VoxelMap::BlockState::Unknown) {
+      continue;
+    }
+    const Eigen::Vector3i g = source.blockCoords(n) + source.firstBlock();
+    const Eigen::Vector3i rel = g - target.firstBlock();
+    if ((rel.array() < 0).any() || (rel.array() >= target.blockDims().array()).any()) {
+      continue;
+    }
+    blockValues(target, g, mine);
+    blockValues(source, g, theirs);
+    for (std::size_t i = 0; i < mine.size(); ++i) {
+      mine[i] = std::min(mine[i], theirs[i]);
+    }
+    stored(target, target.blockIndex(rel), mine);
   }
+}
+
+std::unique_ptr<VoxelMap> mergeMaps(const VoxelMap& a, const VoxelMap& b) {
+  requireOneGrid(a, b);
   const Eigen::Vector3i first = a.firstBlock().cwiseMin(b.firstBlock());
   const Eigen::Vector3i last =
       (a.firstBlock() + a.blockDims()).cwiseMax(b.firstBlock() + b.blockDims());
   auto merged = gridMap(a.voxelSize(), first, last - first);
-  Values va, vb;
-  for (std::size_t n = 0; n < merged->blockCount(); ++n) {
-    const Eigen::Vector3i g = merged->blockCoords(n) + merged->firstBlock();
-    blockValues(a, g, va);
-    blockValues(b, g, vb);
-    for (std::size_t i = 0; i < va.size(); ++i) {
-      va[i] = std::min(va[i], vb[i]);
-    }
-    stored(*merged, n, va);
-  }
+  fuseInto(*merged, a);
+  fuseInto(*merged, b);
   return merged;
 }
 

@@ -27,6 +27,15 @@ void saveMap(const VoxelMap& map, const std::filesystem::path& path);
 /// empty, cut, corrupt or foreign file, or when the map would not fit in the memory available.
 std::unique_ptr<VoxelMap> loadMap(const std::filesystem::path& path);
 
+/// The box spanned by the centres of `map`'s outermost voxels: a map built over it (or over a
+/// box that contains it) has the same blocks, whereas VoxelMap::bounds() reaches the next
+/// block's first voxel.
+Eigen::AlignedBox3d voxelCentresBox(const VoxelMap& map);
+
+/// Fuses `source` into `target` by the voxel-wise minimum, where `source`'s blocks lie inside
+/// `target`'s box (those outside are left out). Throws Error when the voxel sizes differ.
+void fuseInto(VoxelMap& target, const VoxelMap& source);
+
 /// The voxel-wise minimum of two maps on one grid (the same voxel size), over the union of
 /// their boxes; unknown where neither observed a voxel. Throws Error when the voxel sizes
 /// differ.

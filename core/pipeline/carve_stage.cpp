@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "carve/carving_geometry.h"
+#include "carve/map_file.h"
 #include "common/error.h"
 #include "occlusion/occlusion_resolver.h"
 
@@ -28,6 +29,9 @@ Eigen::AlignedBox3d CarveStage::mapBounds(const std::vector<PosedFrame>& frames)
   for (const PosedFrame& f : frames) {
     bounds.extend(geometry.frustumBounds(f.T_world_sonar));
   }
+  if (params_.earlier_map) {
+    bounds.extend(voxelCentresBox(*params_.earlier_map));
+  }
   if (params_.carve.region) {
     bounds = bounds.intersection(*params_.carve.region);
   }
@@ -46,6 +50,9 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
   result.carve.region = bounds;
   result.carve.keep_view_counts = params_.refinement.enabled;
   result.carver = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
+  if (params_.earlier_map) {
+    result.carver->fuse(*params_.earlier_map);
+  }
   std::optional<PoseRefiner> refiner;
   if (params_.refinement.enabled && result.carver->blockMap() != nullptr) {
     refiner.emplace(*result.carver->blockMap(), sonar_, result.carve, params_.refinement, pool_);
@@ -93,6 +100,9 @@ void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source, 
   const VoxelValues candidates = surfaceCandidates(*result.carver);
   const OcclusionResolver first_surface(candidates.voxels, candidates.values, sonar_, result.carve);
   auto refined = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
+  if (params_.earlier_map) {
+    refined->fuse(*params_.earlier_map);
+  }
   VisibilityLimit limit;
   limit.elevation_bins = first_surface.elevationBins();
   limit.elevation_step_rad = result.carve.elevation_step_rad;

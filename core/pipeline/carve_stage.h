@@ -21,6 +21,9 @@ struct CarveStageParams {
   bool occlusion_aware = false;
   /// Fast engine: frames aligned to the map so far before they carve.
   PoseRefinementParams refinement;
+  /// A map carved before (reconstruct --load-map), fused into this run's map before its
+  /// frames carve; the map covers its box too. Null: start from nothing.
+  std::shared_ptr<const VoxelMap> earlier_map;
 };
 
 /// A frame's pose as navigation gave it and as carving used it.

@@ -66,7 +66,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   }
   // Denoise, then carve.
   CarveStageParams stage{params_.engine, params_.carve, params_.occlusion_aware_carving,
-                         params_.pose_refinement};
+                         params_.pose_refinement, earlier_map_};
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
   requireBoundedSizes(bounds, sonar_, params_.carve, pool_.size());

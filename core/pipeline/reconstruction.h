@@ -58,12 +58,18 @@ class Pipeline {
   /// The sonar as carving sees it (the parameters may narrow its vertical aperture).
   const SonarModel& sonar() const { return sonar_; }
   const ReconstructionParams& params() const { return params_; }
+  /// Starts carving from a map carved before (reconstruct --load-map; carve/map_file.h): this
+  /// run's frames carve into it, and the surface is resolved over this run's frames.
+  void startFrom(std::shared_ptr<const VoxelMap> earlier_map) {
+    earlier_map_ = std::move(earlier_map);
+  }
 
  private:
   const Mission& mission_;
   ReconstructionParams params_;
   SonarModel sonar_;
   std::shared_ptr<const NoiseModel> noise_model_;  ///< the params' file, read once; or null
+  std::shared_ptr<const VoxelMap> earlier_map_;    ///< startFrom's map, or null
   ThreadPool& pool_;
 };
 

@@ -1,5 +1,6 @@
 // End-to-end: two runs over the halves of a mission, each saving its map, merged with
-// `sonarcarve-cli merge`, give the map of one run over the whole mission, byte for byte.
+// `sonarcarve-cli merge`, give the map of one run over the whole mission, byte for byte; so
+// does a run over the second half that starts from the first half's map (--load-map).
 #include <gtest/gtest.h>
 
 #include "carve/map_file.h"
@@ -37,6 +38,10 @@ TEST(CliMerge, TheMapsOfTwoHalvesMergeIntoTheMapOfTheWhole) {
   EXPECT_NE(r.output.find("merged 2 maps"), std::string::npos) << r.output;
   EXPECT_NE(test::readText(first), test::readText(whole));
   EXPECT_EQ(test::readText(merged), test::readText(whole));
+
+  // A run over the second half that starts from the first half's map carves the same map.
+  const auto continued = run("continued", "--first-frame 8 --load-map " + quoted(first));
+  EXPECT_EQ(test::readText(continued), test::readText(whole));
 
   // A broken map is refused by name, and nothing is written.
   test::writeText(dir.path() / "cut.scmap", test::readText(first).substr(0, 100));
