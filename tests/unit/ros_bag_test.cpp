@@ -1,0 +1,250 @@
+// ROS 2 bags read back: a mission written by our bag writer in every storage comes back with
+// the same frames (sample for sample within the dtype's rounding), times, sonar geometry,
+// navigation and mounting; the conventions are checked on hand-made bags whose answer is
+// known (a target to starboard must land to starboard).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/angles.h"
+#include "io/bag_writer.h"
+#include "io/frame_source.h"
+#include "io/mcap_writer.h"
+#include "io/ros_bag.h"
+#include "io/ros_messages.h"
+#include "support/bag_fixtures.h"
+#include "support/test_support.h"
+
+namespace sonarcarve {
+namespace {
+
+using test::memoryMission;
+
+std::filesystem::path writeBag(const test::ScratchDir& dir, const Mission& mission,
+                               BagWriteOptions options, const std::string& name) {
+  const auto path = dir.path() / name;
+  const BagWriteReport report = writeRosBag(mission, path, options);
+  EXPECT_EQ(report.frames, mission.frames.size());
+  EXPECT_EQ(report.poses, mission.nav.samples().size());
+  return path;
+}
+
+double maxDifference(const cv::Mat& a, const cv::Mat& b) {
+  return cv::norm(a, b, cv::NORM_INF);
+}
+
+class BagStorages : public ::testing::TestWithParam<BagFormat> {};
+
+TEST_P(BagStorages, ReadBackToTheSameFramesPosesAndMounting) {
+  const test::ScratchDir dir;
+  const Mission original = memoryMission(5, test::countsPattern);
+  BagWriteOptions options;
+  options.format = GetParam();
+  options.chunk_bytes = 4000;  // several chunks: each holds about one frame
+  const auto path =
+      writeBag(dir, original, options, GetParam() == BagFormat::Db3 ? "bag.db3" : "bag.mcap");
+  ASSERT_TRUE(looksLikeRosBag(path));
+  const Mission read = openMission(path);
+  EXPECT_NE(read.source->kind().find("ROS 2 bag"), std::string::npos);
+  EXPECT_TRUE(read.warnings.empty()) << read.warnings.front();
+
+  // Geometry: ranges go through float32 bin centres (relative rounding 6e-8 of 2.5 m).
+  const SonarModel& a = original.sonar;
+  const SonarModel& b = read.sonar;
+  ASSERT_EQ(b.rows(), a.rows());
+  ASSERT_EQ(b.cols(), a.cols());
+  EXPECT_NEAR(b.range().min_m, a.range().min_m, 1e-6);
+  EXPECT_NEAR(b.range().resolution_m, a.range().resolution_m, 1e-7);
+  for (int c = 0; c < a.cols(); ++c) {
+    EXPECT_NEAR(b.bearings().centre(c), a.bearings().centre(c), 1e-12) << c;
+  }
+  // The aperture travels as float32 radians.
+  EXPECT_NEAR(b.verticalAperture(), a.verticalAperture(), 1e-7);
+
+  ASSERT_EQ(read.frames.size(), original.frames.size());
+  for (std::size_t k = 0; k < original.frames.size(); ++k) {
+    EXPECT_NEAR(read.frames[k].time_s, original.frames[k].time_s, 1e-9) << k;
+    const Frame fa = loadFrame(original, k);
+    const Frame fb = loadFrame(read, k);
+    EXPECT_EQ(maxDifference(fa.image, fb.image), 0.0) << "frame " << k;  // uint16: exact
+  }
+
+  // Poses and mounting travel as float64: equal to rounding of the frame conversions.
+  ASSERT_EQ(read.nav.samples().size(), original.nav.samples().size());
+  for (std::size_t k = 0; k < original.nav.samples().size(); ++k) {
+    const NavSample& sa = original.nav.samples()[k];
+    const NavSample& sb = read.nav.samples()[k];
+    EXPECT_NEAR(sb.time_s, sa.time_s, 1e-9);
+    EXPECT_LT((sb.position_m - sa.position_m).norm(), 1e-12) << k;
+    EXPECT_LT(sb.q_world_vehicle.angularDistance(sa.q_world_vehicle), 1e-9) << k;
+  }
+  const Eigen::Isometry3d ma = original.mounting.T_vehicle_sonar();
+  const Eigen::Isometry3d mb = read.mounting.T_vehicle_sonar();
+  EXPECT_LT((ma.translation() - mb.translation()).norm(), 1e-12);
+  EXPECT_LT(Eigen::Quaterniond(ma.linear()).angularDistance(Eigen::Quaterniond(mb.linear())), 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(RosBag, BagStorages,
+                         ::testing::Values(BagFormat::Mcap, BagFormat::McapLz4, BagFormat::McapNone,
+                                           BagFormat::McapUnchunked, BagFormat::Db3),
+                         [](const auto& param_info) {
+                           std::string name(toString(param_info.param));
+                           std::erase(name, '-');
+                           return name;
+                         });
+
+TEST(RosBag, SamplesComeBackWithinTheirDtypeRounding) {
+  const test::ScratchDir dir;
+  // Fractional intensities: float32 keeps them, uint8 rounds them to the nearest count.
+  const Mission original = memoryMission(2, [](std::size_t f, int r, int c) {
+    return static_cast<float>(f * 3 + r * 0.37 + c * 1.91);
+  });
+  for (const SonarDtype dtype : {SonarDtype::Float32, SonarDtype::UInt8, SonarDtype::UInt16}) {
+    BagWriteOptions options;
+    options.dtype = dtype;
+    const auto path = writeBag(dir, original, options,
+                               "dtype" + std::to_string(static_cast<int>(dtype)) + ".mcap");
+    const Mission read = openMission(path);
+    const double rounding = dtype == SonarDtype::Float32 ? 0.0 : 0.5;
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_LE(maxDifference(loadFrame(original, k).image, loadFrame(read, k).image), rounding)
+          << "dtype " << static_cast<int>(dtype) << " frame " << k;
+    }
+  }
+}
+
+TEST(RosBag, LayoutAxesAndClockOptionsReadWhatTheWriterChose) {
+  const test::ScratchDir dir;
+  const Mission original = memoryMission(3, test::countsPattern);
+  BagWriteOptions options;
+  options.layout = ImageLayout::BeamMajor;
+  options.axes = SonarAxes::XForward;
+  options.receive_delay_s = 0.25;
+  const auto path = writeBag(dir, original, options, "other.mcap");
+
+  OpenOptions open;
+  open.bag.layout = ImageLayout::BeamMajor;
+  open.bag.time = BagTime::Receive;
+  const Mission read = openMission(path, open);  // axes: auto finds X forward
+  EXPECT_EQ(maxDifference(loadFrame(original, 1).image, loadFrame(read, 1).image), 0.0);
+  EXPECT_NEAR(read.frames[1].time_s, original.frames[1].time_s + 0.25, 1e-9);
+  bool said_axes = false;
+  for (const std::string& line : read.contents) {
+    said_axes |= line.find("sonar axes x-forward (chosen") != std::string::npos;
+  }
+  EXPECT_TRUE(said_axes);
+
+  // The default layout reads the same bytes into other pixels: the option matters.
+  const Mission wrong_layout = openMission(path);
+  EXPECT_GT(maxDifference(loadFrame(original, 1).image, loadFrame(wrong_layout, 1).image), 0.0);
+  // Forcing the message comment's axes on X-forward directions: every beam points at +-90 deg.
+  open.bag.axes = SonarAxes::ZForward;
+  test::expectError([&] { openMission(path, open); },
+                    {"other.mcap", "beam_directions", "repeats a bearing"});
+}
+
+// A bag made by hand, as another recorder would: a vehicle at the ENU origin with zero yaw
+// (facing east), the sonar mounted at the vehicle origin, one ping with a single bright sample
+// at 5 m on the beam 20 degrees to starboard.
+std::filesystem::path starboardTargetBag(const test::ScratchDir& dir, SonarAxes axes,
+                                         const std::string& name) {
+  constexpr int kBeams = 31;
+  constexpr int kRanges = 100;
+  ProjectedSonarImageMsg image;
+  image.header = {1'000'000'000, "sonar_link"};
+  int target_beam = -1;
+  for (int b = 0; b < kBeams; ++b) {
+    const double bearing = degToRad(-30.0 + 2.0 * b);
+    if (b == 25) {
+      target_beam = b;  // +20 degrees
+    }
+    // Z forward, X up, Y starboard; or X forward, Y port, Z up.
+    image.beam_directions.push_back(
+        axes == SonarAxes::ZForward ? Eigen::Vector3d(0, std::sin(bearing), std::cos(bearing))
+                                    : Eigen::Vector3d(std::cos(bearing), -std::sin(bearing), 0));
+  }
+  for (int r = 0; r < kRanges; ++r) {
+    image.ranges_m.push_back(0.05F + 0.1F * r);
+  }
+  std::vector<std::uint8_t> data(kBeams * kRanges, 0);
+  data[static_cast<std::size_t>(50 * kBeams + target_beam)] = 200;  // 5.05 m
+  image.dtype = 0;
+  image.beam_count = kBeams;
+  image.data = data;
+
+  RosPoseMsg pose;
+  pose.header = {0, "odom"};
+  pose.child_frame_id = "base_link";
+  RosPoseMsg later = pose;
+  later.header.stamp_ns = 2'000'000'000;
+  RosTransformMsg mount;
+  mount.header = {0, "base_link"};
+  mount.child_frame_id = "sonar_link";
+  if (axes == SonarAxes::ZForward) {
+    // The message's sonar frame (Z forward, X up) in the FLU body: Z -> x, X -> z, Y -> -y.
+    Eigen::Matrix3d R;
+    R << 0, 0, 1, 0, -1, 0, 1, 0, 0;
+    mount.rotation = Eigen::Quaterniond(R);
+  }
+  McapWriter writer(McapChunks::Lz4, 1 << 20);
+  const std::vector<std::pair<std::string, std::string>> topics = {
+      {"/oculus/sonar_image", kProjectedSonarImageType},
+      {"/odom", kOdometryType},
+      {"/tf_static", kTfMessageType}};
+  for (std::uint16_t t = 0; t < 3; ++t) {
+    writer.addSchema(t + 1, topics[t].second, rosMessageDefinition(topics[t].second));
+    writer.addChannel(t + 1, t + 1, topics[t].first);
+  }
+  writer.addMessage(3, 0, 0, encodeTfMessage({mount}));
+  writer.addMessage(2, 0, 0, encodeOdometry(pose));
+  writer.addMessage(1, 1'000'000'000, 1'000'000'000, encodeProjectedSonarImage(image));
+  writer.addMessage(2, 2'000'000'000, 2'000'000'000, encodeOdometry(later));
+  const auto bytes = writer.finish();
+  const auto path = dir.path() / name;
+  test::writeText(path, std::string(bytes.begin(), bytes.end()));
+  return path;
+}
+
+TEST(RosBag, ATargetToStarboardLandsToStarboardInEitherAxisConvention) {
+  const test::ScratchDir dir;
+  for (const SonarAxes axes : {SonarAxes::ZForward, SonarAxes::XForward}) {
+    const auto path = starboardTargetBag(dir, axes, std::string(toString(axes)) + ".mcap");
+    for (const SonarAxes chosen : {SonarAxes::Auto, axes}) {
+      OpenOptions options;
+      options.bag.axes = chosen;
+      const Mission mission = openMission(path, options);
+      const Frame frame = loadFrame(mission, 0);
+      cv::Point at;
+      cv::minMaxLoc(frame.image, nullptr, nullptr, nullptr, &at);
+      const Polar polar = mission.sonar.pixelCentre({at.y, at.x});
+      EXPECT_NEAR(radToDeg(polar.bearing_rad), 20.0, 1e-9) << toString(axes);
+      // Facing east (ENU yaw 0), 20 degrees to starboard is east and a little south.
+      const Eigen::Vector3d p_world =
+          mission.nav.T_world_sonar(frame.time_s, mission.mounting.T_vehicle_sonar()) *
+          pointFromPolar(polar);
+      EXPECT_NEAR(p_world.x(), -5.05 * std::sin(degToRad(20)), 1e-6) << toString(axes);
+      EXPECT_NEAR(p_world.y(), 5.05 * std::cos(degToRad(20)), 1e-6) << toString(axes);
+      EXPECT_NEAR(p_world.z(), 0.0, 1e-6) << toString(axes);
+    }
+  }
+}
+
+TEST(RosBag, ABagFolderIsReadThroughItsMetadata) {
+  const test::ScratchDir dir;
+  const Mission original = memoryMission(2, test::countsPattern);
+  const auto folder = dir.path() / "rosbag2_2024_01_01";
+  std::filesystem::create_directories(folder);
+  BagWriteOptions options;
+  options.format = BagFormat::Db3;
+  writeBag(dir, original, options, "rosbag2_2024_01_01/rosbag2_2024_01_01_0.db3");
+  test::writeText(folder / "metadata.yaml",
+                  "rosbag2_bagfile_information:\n  version: 5\n  storage_identifier: sqlite3\n"
+                  "  relative_file_paths:\n    - rosbag2_2024_01_01_0.db3\n");
+  const Mission read = openMission(folder);
+  EXPECT_EQ(read.frames.size(), 2U);
+  EXPECT_NE(read.source->kind().find("bag folder of 1 SQLite3 file"), std::string::npos)
+      << read.source->kind();
+}
+
+}  // namespace
+}  // namespace sonarcarve
