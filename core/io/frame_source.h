@@ -62,6 +62,9 @@ bool registerFrameSourceReader(FrameSourceReader reader);
 /// The registered readers' names, in the order they are asked.
 std::vector<std::string> frameSourceReaderNames();
 
+/// The name of the first registered reader that recognises `path`, if any. Never throws.
+std::optional<std::string> recognisingReader(const std::filesystem::path& path);
+
 /// Opens a mission folder, its mission.yaml or any recording a registered reader recognises.
 /// Throws Error naming the path and the kinds known when no reader recognises it.
 Mission openMission(const std::filesystem::path& path, const OpenOptions& options = {});

@@ -44,6 +44,15 @@ std::vector<std::string> frameSourceReaderNames() {
   return names;
 }
 
+std::optional<std::string> recognisingReader(const std::filesystem::path& path) {
+  for (const FrameSourceReader& reader : readers()) {
+    if (reader.recognises(path)) {
+      return reader.name;
+    }
+  }
+  return std::nullopt;
+}
+
 Mission openMission(const std::filesystem::path& path, const OpenOptions& options) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {

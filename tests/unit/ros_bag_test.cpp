@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "io/bag_navigation.h"
 #include "io/bag_writer.h"
 #include "io/frame_source.h"
 #include "io/mcap_writer.h"
@@ -227,6 +228,32 @@ TEST(RosBag, ATargetToStarboardLandsToStarboardInEitherAxisConvention) {
       EXPECT_NEAR(p_world.z(), 0.0, 1e-6) << toString(axes);
     }
   }
+}
+
+TEST(RosBag, PoseFramesFollowREP103UnlessTheirNamesSayNedAndFrd) {
+  RosPoseMsg pose;
+  pose.position = Eigen::Vector3d(1, 2, 3);
+  pose.header.frame_id = "odom";
+  pose.child_frame_id = "base_link";
+  // ENU and FLU: east 1, north 2, up 3; zero yaw faces east, a heading of 90 degrees.
+  const BagNavigation enu = bagNavigation({{0.0, pose}, {1.0, pose}}, "bag", "/odom");
+  const NavSample& a = enu.track.samples().front();
+  EXPECT_LT((a.position_m - Eigen::Vector3d(2, 1, -3)).norm(), 1e-12);
+  const RollPitchYaw rpy = rollPitchYawFromQuaternion(a.q_world_vehicle);
+  EXPECT_NEAR(radToDeg(rpy.yaw_rad), 90.0, 1e-9);
+  EXPECT_NEAR(rpy.roll_rad, 0.0, 1e-12);
+  EXPECT_NEAR(rpy.pitch_rad, 0.0, 1e-12);
+  // Names ending in _ned / _frd: taken as they are.
+  pose.header.frame_id = "odom_ned";
+  pose.child_frame_id = "base_link_frd";
+  const BagNavigation ned = bagNavigation({{0.0, pose}, {1.0, pose}, {1.0, pose}}, "bag", "/odom");
+  EXPECT_TRUE(ned.conventions.world_ned && ned.conventions.body_frd);
+  EXPECT_LT((ned.track.samples().front().position_m - Eigen::Vector3d(1, 2, 3)).norm(), 1e-12);
+  EXPECT_LT(
+      ned.track.samples().front().q_world_vehicle.angularDistance(Eigen::Quaterniond::Identity()),
+      1e-12);
+  EXPECT_EQ(ned.duplicates, 1U);  // a repeated time is left out and counted
+  EXPECT_EQ(ned.track.samples().size(), 2U);
 }
 
 TEST(RosBag, ABagFolderIsReadThroughItsMetadata) {
