@@ -13,14 +13,14 @@
 #include "geometry/scene_io.h"
 #include "io/aris_file.h"
 #include "io/bag_sonar.h"
-#include "io/ros_bag.h"
-#include "io/ros_messages.h"
 #include "io/frame_png.h"
 #include "io/mission.h"
 #include "io/nav_import.h"
 #include "io/oculus_log.h"
 #include "io/ply_check.h"
 #include "io/point_cloud_ply.h"
+#include "io/ros_bag.h"
+#include "io/ros_messages.h"
 #include "io/session_file.h"
 #include "pipeline/reconstruction_params.h"
 
@@ -96,8 +96,8 @@ void decodeBag(const RosBag& bag) {
         case RosMessageKind::SonarImage: {
           const ProjectedSonarImageMsg msg = decodeProjectedSonarImage(bytes, source, m.place);
           if (!geometry) {
-            geometry = bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor,
-                                        std::nullopt, "fuzz", source, m.place);
+            geometry = bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor, std::nullopt,
+                                        "fuzz", source, m.place);
           }
           bagSonarImage(msg, *geometry, source, m.place);
           break;
@@ -211,12 +211,11 @@ void referenceMesh(std::span<const std::uint8_t> bytes) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {{"oculus", oculusLog},       {"mission", mission},
-                                          {"frame_png", framePng},     {"ply", plyPointCloud},
-                                          {"nav_import", navImport},   {"params_yaml", paramsYaml},
-                                          {"noise_model", noiseModel}, {"mesh", referenceMesh},
-                                          {"session", sessionFile},    {"aris", arisFile},
-                                          {"mcap", mcapBag},           {"db3", sqliteBag}};
+  static const std::vector<Target> all = {
+      {"oculus", oculusLog},       {"mission", mission},      {"frame_png", framePng},
+      {"ply", plyPointCloud},      {"nav_import", navImport}, {"params_yaml", paramsYaml},
+      {"noise_model", noiseModel}, {"mesh", referenceMesh},   {"session", sessionFile},
+      {"aris", arisFile},          {"mcap", mcapBag},         {"db3", sqliteBag}};
   return all;
 }
 
