@@ -53,8 +53,9 @@ void addSourceFlags(CLI::App& cmd, SourceFlags& flags) {
                  "PoseWithCovarianceStamped one)");
   cmd.add_option("--sonar-axes", flags.sonar_axes,
                  "ROS 2 bag: frame of the beam directions: z-forward (the message comment: Z "
-                 "forward, X up), x-forward (X forward, Y left, as some simulators), auto")
-      ->check(CLI::IsMember({"auto", "z-forward", "x-forward"}))
+                 "forward, X up), x-forward (X forward, Y left, as some simulators), frd (X "
+                 "forward, Y starboard, Z down), auto")
+      ->check(CLI::IsMember({"auto", "z-forward", "x-forward", "frd"}))
       ->capture_default_str();
   cmd.add_option("--image-layout", flags.image_layout,
                  "ROS 2 bag: order of the image data: range-major (data[range * beams + beam]) "

@@ -13,12 +13,14 @@ namespace sonarcarve {
 /// The sonar frame of ProjectedSonarImage.beam_directions. ZForward: the message comment's
 /// (Z forward along the fan's centre, X up, so Y to starboard); XForward: REP-103's body frame
 /// as some simulators write it (X forward, Y to port, Z up); Auto: ZForward if the directions'
-/// Z components outweigh their X components, else XForward.
-enum class SonarAxes { Auto, ZForward, XForward };
-inline constexpr std::array<EnumName<SonarAxes>, 3> kSonarAxesNames{{
+/// Z components outweigh their X components, else XForward. Frd: X forward, Y starboard, Z
+/// down (our sonar frame, and the NED frame of the older acoustic_msgs/SonarImage).
+enum class SonarAxes { Auto, ZForward, XForward, Frd };
+inline constexpr std::array<EnumName<SonarAxes>, 4> kSonarAxesNames{{
     {SonarAxes::Auto, "auto"},
     {SonarAxes::ZForward, "z-forward"},
     {SonarAxes::XForward, "x-forward"},
+    {SonarAxes::Frd, "frd"},
 }};
 constexpr const auto& enumNamesOf(SonarAxes) {
   return kSonarAxesNames;

@@ -176,7 +176,8 @@ BagSonarGeometry bagSonarGeometry(const ProjectedSonarImageMsg& msg, SonarAxes a
                   ? " (chosen: the beam directions lie in the Y-Z plane, as the message comment "
                     "says)"
                   : " (chosen: the beam directions lie in the X-Y plane, X forward)")
-           : " (--sonar-axes)") +
+       : resolved == SonarAxes::Frd ? ""
+                                    : " (--sonar-axes)") +
       "; bearings " + fixed(radToDeg(centres.front()), 2) + " to " +
       fixed(radToDeg(centres.back()), 2) + " deg, positive to starboard");
   g.notes.push_back("image layout " + std::string(toString(layout)) +

@@ -22,9 +22,12 @@ struct IndexedFrame {
 
 class BagSource final : public FrameSource {
  public:
-  BagSource(std::shared_ptr<const RosBag> bag, BagSonarGeometry geometry,
+  BagSource(std::shared_ptr<const RosBag> bag, std::string type, BagSonarGeometry geometry,
             std::vector<IndexedFrame> frames)
-      : bag_(std::move(bag)), geometry_(std::move(geometry)), frames_(std::move(frames)) {}
+      : bag_(std::move(bag)),
+        type_(std::move(type)),
+        geometry_(std::move(geometry)),
+        frames_(std::move(frames)) {}
 
   std::string kind() const override { return "ROS 2 bag, " + bag_->storage(); }
   std::size_t size() const override { return frames_.size(); }
@@ -33,7 +36,7 @@ class BagSource final : public FrameSource {
     const BagMessage& m = bag_->messages()[f.message];
     const std::string source = bag_->path().string();
     const std::vector<std::uint8_t> bytes = bag_->payload(m);
-    const ProjectedSonarImageMsg msg = decodeProjectedSonarImage(bytes, source, m.place);
+    const ProjectedSonarImageMsg msg = decodeSonarImage(type_, bytes, source, m.place);
     Frame frame;
     frame.time_s = f.time_s;
     frame.sonar_id = geometry_.sonar.id();
@@ -43,6 +46,7 @@ class BagSource final : public FrameSource {
 
  private:
   std::shared_ptr<const RosBag> bag_;
+  std::string type_;
   BagSonarGeometry geometry_;
   std::vector<IndexedFrame> frames_;
 };
@@ -155,11 +159,21 @@ SonarFrames indexSonarFrames(const RosBag& bag, std::size_t topic, const OpenOpt
                              std::vector<std::string>& problems) {
   SonarFrames out;
   const std::string source = bag.path().string();
+  const std::string& type = bag.topics()[topic].type;
+  // The older SonarImage states its frame and layout; the options are for ProjectedSonarImage.
+  const bool legacy = isLegacySonarImage(type);
+  const SonarAxes axes = legacy ? SonarAxes::Frd : options.bag.axes;
+  const ImageLayout layout = legacy ? ImageLayout::BeamMajor : options.bag.layout;
   forEachMessage(bag, topic, problems, [&](std::size_t i, const BagMessage& m, const auto& bytes) {
-    const ProjectedSonarImageMsg msg = decodeProjectedSonarImage(bytes, source, m.place);
+    const ProjectedSonarImageMsg msg = decodeSonarImage(type, bytes, source, m.place);
     if (!out.geometry) {
-      out.geometry = bagSonarGeometry(msg, options.bag.axes, options.bag.layout,
-                                      options.vertical_aperture_deg, "ros-bag", source, m.place);
+      out.geometry = bagSonarGeometry(msg, axes, layout, options.vertical_aperture_deg, "ros-bag",
+                                      source, m.place);
+      if (legacy) {
+        out.geometry->notes.push_back(
+            "acoustic_msgs/msg/SonarImage: azimuths in its NED sonar frame and azimuth-major "
+            "data, as the message defines (--sonar-axes and --image-layout do not apply)");
+      }
       bagSonarImage(msg, *out.geometry, source, m.place);
       out.frame_id = msg.header.frame_id;
     }
@@ -211,7 +225,7 @@ Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
     }
     throw Error(source, "",
                 "no sonar image topic: expected " + std::string(kProjectedSonarImageType) +
-                    "; the bag has " + types);
+                    " (or acoustic_msgs/msg/SonarImage); the bag has " + types);
   }
   requireCdr(*bag, *sonar_topic);
   SonarFrames sonar = indexSonarFrames(*bag, *sonar_topic, options, problems);
@@ -279,7 +293,8 @@ Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
   }
   mission.contents = std::move(contents);
   applyNavigationAndMounting(mission, options);
-  mission.source = std::make_shared<const BagSource>(bag, geometry, std::move(sonar.frames));
+  mission.source = std::make_shared<const BagSource>(bag, bag->topics()[*sonar_topic].type,
+                                                     geometry, std::move(sonar.frames));
   return mission;
 }
 

@@ -5,9 +5,7 @@
 // chunk's CRC is checked when the writer computed one). A chunk that cannot be decompressed
 // or holds a corrupt record is reported and skipped; reading goes on with the next record,
 // whose place the chunk's length gives.
-#include <lz4frame.h>
 #include <zlib.h>
-#include <zstd.h>
 
 #include <algorithm>
 #include <cstring>
@@ -16,6 +14,7 @@
 
 #include "common/error.h"
 #include "common/input_limits.h"
+#include "io/decompress.h"
 #include "io/mapped_file.h"
 #include "io/mcap_format.h"
 #include "io/ros_bag.h"
@@ -77,75 +76,6 @@ std::string opcodeName(std::uint8_t op) {
   char text[8];
   std::snprintf(text, sizeof text, "0x%02X", op);
   return text;
-}
-
-// Decompresses a chunk's records, growing the output only as far as the data really expands
-// (a corrupt uncompressed_size cannot make us allocate what is not there).
-std::vector<std::uint8_t> decompressLz4(Bytes in, std::uint64_t expected, RecordReader& where) {
-  LZ4F_dctx* ctx = nullptr;
-  if (LZ4F_isError(LZ4F_createDecompressionContext(&ctx, LZ4F_VERSION))) {
-    where.fail("cannot create an lz4 decompression context");
-  }
-  std::vector<std::uint8_t> out;
-  std::size_t in_pos = 0;
-  std::string problem;
-  while (problem.empty()) {
-    const std::size_t step = std::min<std::uint64_t>(expected - out.size() + 1, 1 << 20);
-    const std::size_t old = out.size();
-    out.resize(old + step);
-    std::size_t out_size = step;
-    std::size_t in_size = in.size() - in_pos;
-    const std::size_t hint =
-        LZ4F_decompress(ctx, out.data() + old, &out_size, in.data() + in_pos, &in_size, nullptr);
-    out.resize(old + out_size);
-    in_pos += in_size;
-    if (LZ4F_isError(hint)) {
-      problem = std::string("lz4 data is corrupt (") + LZ4F_getErrorName(hint) + ")";
-    } else if (out.size() > expected) {
-      problem = "lz4 data expands beyond the chunk's uncompressed_size " + std::to_string(expected);
-    } else if (hint == 0) {
-      break;  // the frame is complete
-    } else if (in_size == 0 && out_size == 0) {
-      problem = "lz4 frame is cut short";
-    }
-  }
-  LZ4F_freeDecompressionContext(ctx);
-  if (!problem.empty()) {
-    where.fail(problem);
-  }
-  return out;
-}
-
-std::vector<std::uint8_t> decompressZstd(Bytes in, std::uint64_t expected, RecordReader& where) {
-  ZSTD_DStream* stream = ZSTD_createDStream();
-  if (stream == nullptr) {
-    where.fail("cannot create a zstd decompression context");
-  }
-  std::vector<std::uint8_t> out;
-  ZSTD_inBuffer input{in.data(), in.size(), 0};
-  std::string problem;
-  std::size_t hint = 1;
-  while (problem.empty() && hint != 0) {
-    const std::size_t step = std::min<std::uint64_t>(expected - out.size() + 1, 1 << 20);
-    const std::size_t old = out.size();
-    out.resize(old + step);
-    ZSTD_outBuffer output{out.data() + old, step, 0};
-    hint = ZSTD_decompressStream(stream, &output, &input);
-    out.resize(old + output.pos);
-    if (ZSTD_isError(hint)) {
-      problem = std::string("zstd data is corrupt (") + ZSTD_getErrorName(hint) + ")";
-    } else if (out.size() > expected) {
-      problem =
-          "zstd data expands beyond the chunk's uncompressed_size " + std::to_string(expected);
-    } else if (hint != 0 && input.pos == input.size && output.pos == 0) {
-      problem = "zstd frame is cut short";
-    }
-  }
-  ZSTD_freeDStream(stream);
-  if (!problem.empty()) {
-    where.fail(problem);
-  }
-  return out;
 }
 
 struct Chunk {
@@ -432,14 +362,15 @@ void McapBag::readChunk(Bytes content, std::size_t offset, const std::string& pl
 }
 
 std::vector<std::uint8_t> McapBag::uncompressed(const Chunk& chunk) const {
-  RecordReader where(chunk.records, source_, "chunk at " + bytePlace(chunk.offset));
+  const std::string place = "chunk at " + bytePlace(chunk.offset);
+  RecordReader where(chunk.records, source_, place);
   std::vector<std::uint8_t> out;
   if (chunk.compression.empty()) {
     out.assign(chunk.records.begin(), chunk.records.end());
   } else if (chunk.compression == "lz4") {
-    out = decompressLz4(chunk.records, chunk.uncompressed_size, where);
+    out = decompressLz4Frame(chunk.records, chunk.uncompressed_size, source_, place);
   } else {
-    out = decompressZstd(chunk.records, chunk.uncompressed_size, where);
+    out = decompressZstdFrame(chunk.records, chunk.uncompressed_size, source_, place);
   }
   if (out.size() != chunk.uncompressed_size) {
     where.fail("chunk holds " + std::to_string(out.size()) +

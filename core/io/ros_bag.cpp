@@ -9,6 +9,7 @@
 #include <map>
 
 #include "common/error.h"
+#include "io/input_file.h"
 #include "io/mcap_format.h"
 
 namespace sonarcarve {
@@ -49,6 +50,7 @@ bool sqliteHasMessagesTable(const std::filesystem::path& path) {
 }
 
 std::unique_ptr<RosBag> openBagFile(const std::filesystem::path& path) {
+  requireRegularFile(path, "a bag storage file (.mcap or .db3)");
   switch (bagFileKind(path)) {
     case BagFileKind::Mcap:
       return openMcapBag(path);
@@ -56,6 +58,11 @@ std::unique_ptr<RosBag> openBagFile(const std::filesystem::path& path) {
       return openSqliteBag(path);
     case BagFileKind::None:
       break;
+  }
+  if (path.extension() == ".zstd" || path.extension() == ".lz4") {
+    throw Error(path.string(), "",
+                "a bag file compressed as a whole (rosbag2's compression_mode: file): "
+                "decompress it first (zstd -d), then open the folder or the file");
   }
   throw Error(path.string(), bytePlace(0),
               "not a bag storage file (expected the MCAP magic or a SQLite3 header)");

@@ -61,6 +61,9 @@ Eigen::Matrix3d rosSonarAxes(SonarAxes axes) {
   if (axes == SonarAxes::XForward) {
     return bodySwap(false);
   }
+  if (axes == SonarAxes::Frd) {
+    return Eigen::Matrix3d::Identity();
+  }
   // Our x (boresight) -> message Z, our y (starboard) -> message Y, our z (down) -> -X (X up).
   Eigen::Matrix3d m;
   m << 0, 0, -1, 0, 1, 0, 1, 0, 0;

@@ -32,7 +32,7 @@ Eigen::Isometry3d rosWorldBody(const Eigen::Isometry3d& T_world_vehicle,
                                const RosFrameConventions& conventions);
 
 /// R_msg_ours: rotates a vector of our sonar frame (FRD, x along the boresight) into the
-/// message's sonar frame for `axes` (ZForward or XForward; not Auto).
+/// message's sonar frame for `axes` (ZForward, XForward or Frd; not Auto).
 Eigen::Matrix3d rosSonarAxes(SonarAxes axes);
 /// The mounting T_vehicle_sonar (ours) from the ROS transform of the message's sonar frame in
 /// the body frame.

@@ -138,9 +138,14 @@ void writeZeros(CdrWriter& out, int count) {
 
 }  // namespace
 
+bool isLegacySonarImage(std::string_view type) {
+  return shortType(type) == "acoustic_msgs/SonarImage";
+}
+
 RosMessageKind rosMessageKind(std::string_view type) {
   const std::string t = shortType(type);
-  if (t == "marine_acoustic_msgs/ProjectedSonarImage" || t == "acoustic_msgs/ProjectedSonarImage") {
+  if (t == "marine_acoustic_msgs/ProjectedSonarImage" || t == "acoustic_msgs/ProjectedSonarImage" ||
+      isLegacySonarImage(t)) {
     return RosMessageKind::SonarImage;
   }
   if (t == "nav_msgs/Odometry" || t == "geometry_msgs/PoseStamped" ||
@@ -208,6 +213,41 @@ ProjectedSonarImageMsg decodeProjectedSonarImage(std::span<const std::uint8_t> c
   msg.data = in.readBytes(size, "image.data");
   in.requireEnd(7, kProjectedSonarImageType);
   return msg;
+}
+
+ProjectedSonarImageMsg decodeLegacySonarImage(std::span<const std::uint8_t> cdr,
+                                              const std::string& source, const std::string& place) {
+  CdrReader in(cdr, source, place);
+  ProjectedSonarImageMsg msg;
+  msg.header = readHeader(in);
+  msg.frequency_hz = in.read<float>("frequency");
+  msg.sound_speed_mps = in.read<float>("sound_speed");
+  msg.rx_beamwidths_rad = {in.read<float>("azimuth_beamwidth")};
+  msg.tx_beamwidths_rad = {in.read<float>("elevation_beamwidth")};
+  for (const float azimuth : in.readSequence<float>("azimuth_angles")) {
+    msg.beam_directions.emplace_back(std::cos(azimuth), std::sin(azimuth), 0.0);
+  }
+  in.readSequence<float>("elevation_angles");
+  msg.ranges_m = in.readSequence<float>("ranges");
+  msg.is_bigendian = in.readBool("is_bigendian");
+  const auto data_size = in.read<std::uint8_t>("data_size");
+  if (data_size != 1 && data_size != 2 && data_size != 4) {
+    in.fail("data_size " + std::to_string(data_size) + ": expected 1, 2 or 4 bytes");
+  }
+  msg.dtype = static_cast<std::uint32_t>(data_size == 1   ? SonarDtype::UInt8
+                                         : data_size == 2 ? SonarDtype::UInt16
+                                                          : SonarDtype::UInt32);
+  msg.beam_count = static_cast<std::uint32_t>(msg.beam_directions.size());
+  const std::uint32_t size = in.readCount(1, "intensities");
+  msg.data = in.readBytes(size, "intensities");
+  in.requireEnd(7, "acoustic_msgs/msg/SonarImage");
+  return msg;
+}
+
+ProjectedSonarImageMsg decodeSonarImage(std::string_view type, std::span<const std::uint8_t> cdr,
+                                        const std::string& source, const std::string& place) {
+  return isLegacySonarImage(type) ? decodeLegacySonarImage(cdr, source, place)
+                                  : decodeProjectedSonarImage(cdr, source, place);
 }
 
 RosPoseMsg decodeRosPose(std::string_view type, std::span<const std::uint8_t> cdr,

@@ -21,6 +21,9 @@ namespace sonarcarve {
 /// What a message type is to SonarCarve.
 enum class RosMessageKind { Other, SonarImage, VehiclePose, Transforms };
 
+/// True for the older acoustic_msgs/msg/SonarImage (azimuths instead of beam directions).
+bool isLegacySonarImage(std::string_view type);
+
 /// The kind of a type name, with or without "/msg/" ("nav_msgs/msg/Odometry",
 /// "nav_msgs/Odometry").
 RosMessageKind rosMessageKind(std::string_view type);
@@ -88,6 +91,17 @@ RosHeader decodeRosHeader(std::span<const std::uint8_t> cdr, const std::string& 
 ProjectedSonarImageMsg decodeProjectedSonarImage(std::span<const std::uint8_t> cdr,
                                                  const std::string& source,
                                                  const std::string& place);
+/// The older acoustic_msgs/msg/SonarImage (std_msgs/Header header, float32 frequency,
+/// sound_speed, azimuth_beamwidth, elevation_beamwidth, float32[] azimuth_angles,
+/// elevation_angles, ranges, bool is_bigendian, uint8 data_size, uint8[] intensities) as a
+/// ProjectedSonarImageMsg: beam directions (cos az, sin az, 0) in its NED sonar frame (X
+/// forward, Y starboard: SonarAxes::Frd), tx_beamwidths {elevation_beamwidth}, data_size 1, 2
+/// or 4 as uint8, uint16 or uint32; its data is azimuth-major (ImageLayout::BeamMajor).
+ProjectedSonarImageMsg decodeLegacySonarImage(std::span<const std::uint8_t> cdr,
+                                              const std::string& source, const std::string& place);
+/// Either sonar image type, by `type`.
+ProjectedSonarImageMsg decodeSonarImage(std::string_view type, std::span<const std::uint8_t> cdr,
+                                        const std::string& source, const std::string& place);
 /// Odometry, PoseStamped or PoseWithCovarianceStamped, by `type`.
 RosPoseMsg decodeRosPose(std::string_view type, std::span<const std::uint8_t> cdr,
                          const std::string& source, const std::string& place);

@@ -1,6 +1,7 @@
 // rosbag2's SQLite3 storage (.db3): tables topics(id, name, type, serialization_format, ...)
 // and messages(id, topic_id, timestamp, data); newer bags add schema and metadata tables,
-// which are not needed. The file is opened read-only and immutable (no journal is written
+// which are not needed. Payloads compressed one by one (rosbag2's compression_mode: message,
+// zstd) are decompressed. The file is opened read-only and immutable (no journal is written
 // beside a bag that may sit on read-only media); payloads are read by row id on demand.
 #include <sqlite3.h>
 
@@ -8,6 +9,8 @@
 #include <mutex>
 
 #include "common/error.h"
+#include "common/input_limits.h"
+#include "io/decompress.h"
 #include "io/input_file.h"
 #include "io/ros_bag.h"
 
@@ -66,7 +69,10 @@ class SqliteBag final : public RosBag {
     const int size = sqlite3_column_bytes(payload_query_, 0);
     std::vector<std::uint8_t> out(data, data + (data != nullptr && size > 0 ? size : 0));
     sqlite3_reset(payload_query_);
-    return out;
+    // rosbag2's message compression (compression_mode: message) stores each payload as a zstd
+    // frame; CDR starts with 00 00 or 00 01, never with the zstd magic.
+    return isZstdFrame(out) ? decompressZstdFrame(out, kMaxBagChunkBytes, source_, message.place)
+                            : out;
   }
 
  private:

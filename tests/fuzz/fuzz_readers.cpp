@@ -94,10 +94,12 @@ void decodeBag(const RosBag& bag) {
       const std::string& type = bag.topics().at(m.topic).type;
       switch (rosMessageKind(type)) {
         case RosMessageKind::SonarImage: {
-          const ProjectedSonarImageMsg msg = decodeProjectedSonarImage(bytes, source, m.place);
+          const ProjectedSonarImageMsg msg = decodeSonarImage(type, bytes, source, m.place);
           if (!geometry) {
-            geometry = bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor, std::nullopt,
-                                        "fuzz", source, m.place);
+            const bool legacy = isLegacySonarImage(type);
+            geometry = bagSonarGeometry(msg, legacy ? SonarAxes::Frd : SonarAxes::Auto,
+                                        legacy ? ImageLayout::BeamMajor : ImageLayout::RangeMajor,
+                                        std::nullopt, "fuzz", source, m.place);
           }
           bagSonarImage(msg, *geometry, source, m.place);
           break;

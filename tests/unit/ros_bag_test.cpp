@@ -3,12 +3,16 @@
 // navigation and mounting; the conventions are checked on hand-made bags whose answer is
 // known (a target to starboard must land to starboard).
 #include <gtest/gtest.h>
+#include <sqlite3.h>
+#include <zstd.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "common/angles.h"
 #include "io/bag_navigation.h"
 #include "io/bag_writer.h"
+#include "io/cdr.h"
 #include "io/frame_source.h"
 #include "io/mcap_writer.h"
 #include "io/ros_bag.h"
@@ -230,6 +234,62 @@ TEST(RosBag, ATargetToStarboardLandsToStarboardInEitherAxisConvention) {
   }
 }
 
+// The older acoustic_msgs/SonarImage, written field by field as its definition says: 31
+// azimuths from -30 to +30 degrees (positive to starboard), 100 ranges, uint16 data
+// azimuth-major, one bright sample at 5.05 m on the beam at +20 degrees.
+std::vector<std::uint8_t> legacySonarImage() {
+  CdrWriter out;
+  out.write(std::int32_t{1});
+  out.write(std::uint32_t{0});
+  out.writeString("sonar_ned");
+  out.write(900e3F);
+  out.write(1500.0F);
+  out.write(0.03F);
+  out.write(static_cast<float>(degToRad(14.0)));
+  std::vector<float> azimuths;
+  for (int b = 0; b < 31; ++b) {
+    azimuths.push_back(static_cast<float>(degToRad(-30.0 + 2.0 * b)));
+  }
+  out.writeSequence(azimuths);
+  out.writeCount(0);  // elevation_angles
+  std::vector<float> ranges;
+  for (int r = 0; r < 100; ++r) {
+    ranges.push_back(0.05F + 0.1F * r);
+  }
+  out.writeSequence(ranges);
+  out.writeBool(false);
+  out.write(std::uint8_t{2});
+  std::vector<std::uint8_t> data(31 * 100 * 2, 0);
+  const std::uint16_t bright = 40000;
+  std::memcpy(data.data() + (25 * 100 + 50) * 2, &bright, 2);  // azimuth-major
+  out.writeCount(data.size());
+  out.writeBytes(data);
+  return out.bytes();
+}
+
+TEST(RosBag, TheOlderSonarImageIsReadInItsOwnFrameAndLayout) {
+  const test::ScratchDir dir;
+  McapWriter writer(McapChunks::Zstd, 1 << 20);
+  writer.addSchema(1, "acoustic_msgs/msg/SonarImage", "");
+  writer.addChannel(1, 1, "/sonar");
+  writer.addMessage(1, 1'000'000'000, 1'000'000'000, legacySonarImage());
+  const auto bytes = writer.finish();
+  const auto path = dir.path() / "legacy.mcap";
+  test::writeText(path, std::string(bytes.begin(), bytes.end()));
+  OpenOptions options;
+  options.bag.layout = ImageLayout::RangeMajor;  // does not apply to this type
+  const Mission mission = openMission(path, options);
+  EXPECT_NEAR(radToDeg(mission.sonar.verticalAperture()), 14.0, 1e-5);
+  const Frame frame = loadFrame(mission, 0);
+  cv::Point at;
+  double peak = 0.0;
+  cv::minMaxLoc(frame.image, nullptr, &peak, nullptr, &at);
+  EXPECT_EQ(peak, 40000.0);
+  const Polar polar = mission.sonar.pixelCentre({at.y, at.x});
+  EXPECT_NEAR(radToDeg(polar.bearing_rad), 20.0, 1e-5);  // float32 azimuths
+  EXPECT_NEAR(polar.range_m, 5.05, 1e-5);
+}
+
 TEST(RosBag, PoseFramesFollowREP103UnlessTheirNamesSayNedAndFrd) {
   RosPoseMsg pose;
   pose.position = Eigen::Vector3d(1, 2, 3);
@@ -254,6 +314,43 @@ TEST(RosBag, PoseFramesFollowREP103UnlessTheirNamesSayNedAndFrd) {
       1e-12);
   EXPECT_EQ(ned.duplicates, 1U);  // a repeated time is left out and counted
   EXPECT_EQ(ned.track.samples().size(), 2U);
+}
+
+TEST(RosBag, Db3MessagesCompressedOneByOneAreDecompressed) {
+  // rosbag2's `--compression-mode message --compression-format zstd`: each row's data is a
+  // zstd frame of the CDR bytes.
+  const test::ScratchDir dir;
+  const Mission original = memoryMission(3, test::countsPattern);
+  BagWriteOptions options;
+  options.format = BagFormat::Db3;
+  const auto path = writeBag(dir, original, options, "compressed.db3");
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  sqlite3_stmt* rows = nullptr;
+  sqlite3_prepare_v2(db, "SELECT id, data FROM messages", -1, &rows, nullptr);
+  std::vector<std::pair<sqlite3_int64, std::vector<char>>> compressed;
+  while (sqlite3_step(rows) == SQLITE_ROW) {
+    const auto* data = static_cast<const char*>(sqlite3_column_blob(rows, 1));
+    const auto size = static_cast<std::size_t>(sqlite3_column_bytes(rows, 1));
+    std::vector<char> frame(ZSTD_compressBound(size));
+    frame.resize(ZSTD_compress(frame.data(), frame.size(), data, size, 3));
+    compressed.emplace_back(sqlite3_column_int64(rows, 0), std::move(frame));
+  }
+  sqlite3_finalize(rows);
+  sqlite3_stmt* update = nullptr;
+  sqlite3_prepare_v2(db, "UPDATE messages SET data = ? WHERE id = ?", -1, &update, nullptr);
+  for (const auto& [id, frame] : compressed) {
+    sqlite3_reset(update);
+    sqlite3_bind_blob(update, 1, frame.data(), static_cast<int>(frame.size()), SQLITE_STATIC);
+    sqlite3_bind_int64(update, 2, id);
+    ASSERT_EQ(sqlite3_step(update), SQLITE_DONE);
+  }
+  sqlite3_finalize(update);
+  sqlite3_close(db);
+  const Mission read = openMission(path);
+  ASSERT_EQ(read.frames.size(), 3U);
+  EXPECT_EQ(maxDifference(loadFrame(original, 2).image, loadFrame(read, 2).image), 0.0);
+  EXPECT_EQ(read.nav.samples().size(), original.nav.samples().size());
 }
 
 TEST(RosBag, ABagFolderIsReadThroughItsMetadata) {
