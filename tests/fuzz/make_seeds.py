@@ -238,7 +238,35 @@ def mcap_bag(chunks=None):
     return b
 
 
-def db3_bag():
+def legacy_sonar_image(t_ns, beams=4, ranges=5):
+    """The older acoustic_msgs/SonarImage: azimuths, azimuth-major uint16 intensities."""
+    c = Cdr()
+    c.header(t_ns, "sonar_ned")
+    c.put("ffff", 900e3, 1500.0, 0.02, 0.35)
+    c.put("I", beams)
+    c.put("%df" % beams, *[math.radians(-30 + 60 * (j + 0.5) / beams) for j in range(beams)])
+    c.put("I", 0)
+    c.put("I", ranges)
+    c.put("%df" % ranges, *[0.5 + 0.1 * r for r in range(ranges)])
+    c.put("B", 0)
+    c.put("B", 2)
+    c.put("I", 2 * beams * ranges)
+    c.b += b"".join(struct.pack("<H", 300 * i) for i in range(beams * ranges))
+    return bytes(c.b)
+
+
+def legacy_mcap_bag():
+    b = b"\x89MCAP0\r\n" + mcap_record(1, mcap_string("ros2") + mcap_string("make_seeds"))
+    b += mcap_record(3, struct.pack("<H", 1) + mcap_string("acoustic_msgs/msg/SonarImage") +
+                     mcap_string("ros2msg") + mcap_string(""))
+    b += mcap_record(4, struct.pack("<HH", 1, 1) + mcap_string("/sonar") + mcap_string("cdr") +
+                     struct.pack("<I", 0))
+    for n in range(2):
+        b += mcap_record(5, struct.pack("<HIQQ", 1, n, n, n) + legacy_sonar_image(n * 10**9))
+    return b + mcap_record(15, struct.pack("<I", 0)) + mcap_record(2, bytes(20)) + b"\x89MCAP0\r\n"
+
+
+def db3_bag(compress_messages=False):
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "bag.db3"
         db = sqlite3.connect(path)
@@ -250,7 +278,8 @@ def db3_bag():
         db.executemany("INSERT INTO topics VALUES(?, ?, ?, 'cdr', '')",
                        [(i + 1, name, type_name) for i, (name, type_name) in enumerate(BAG_TOPICS)])
         db.executemany("INSERT INTO messages(topic_id, timestamp, data) VALUES(?, ?, ?)",
-                       [(t + 1, ns, data) for t, ns, data in bag_messages()])
+                       [(t + 1, ns, compress("zstd", data) if compress_messages else data)
+                        for t, ns, data in bag_messages()])
         db.commit()
         db.close()
         return path.read_bytes()
@@ -311,7 +340,9 @@ def main():
     write("mcap", "chunk_lz4.mcap", mcap_bag("lz4"))
     write("mcap", "chunk_zstd.mcap", mcap_bag("zstd"))
     write("mcap", "cut_short.mcap", mcap_bag("zstd")[:-60])
+    write("mcap", "legacy_sonar_image.mcap", legacy_mcap_bag())
     write("db3", "tiny.db3", db3_bag())
+    write("db3", "messages_zstd.db3", db3_bag(compress_messages=True))
 
 
 if __name__ == "__main__":
