@@ -38,7 +38,7 @@ SonarAxes resolveAxes(SonarAxes axes, const std::vector<Eigen::Vector3d>& direct
 }
 
 RangeBins rangeBinsOf(const std::vector<float>& ranges, const std::string& source,
-                      const std::string& place) {
+                      const std::string& place, std::vector<std::string>& notes) {
   if (ranges.size() < 2 || ranges.size() > static_cast<std::size_t>(kMaxRangeBins)) {
     throw Error(source, place,
                 "ranges holds " + std::to_string(ranges.size()) + " values: expected 2 to " +
@@ -63,7 +63,14 @@ RangeBins rangeBinsOf(const std::vector<float>& ranges, const std::string& sourc
                       " m); unequal bins are not supported");
     }
   }
-  return {std::max(0.0, first - resolution / 2.0), resolution, static_cast<int>(ranges.size())};
+  const double start = first - resolution / 2.0;
+  if (start < -1e-6 * resolution) {
+    // A bin centred under half a bin from the sonar would start before it: our bins start at 0.
+    notes.push_back("ranges[0] is " + fixed(first, 4) + " m, less than half a bin (" +
+                    fixed(resolution, 4) + " m): the bins are taken to start at 0 m, " +
+                    fixed(-start, 4) + " m further than the message's centres");
+  }
+  return {std::max(0.0, start), resolution, static_cast<int>(ranges.size())};
 }
 
 double apertureOf(const ProjectedSonarImageMsg& msg, std::optional<double> aperture_deg,
@@ -160,7 +167,7 @@ BagSonarGeometry bagSonarGeometry(const ProjectedSonarImageMsg& msg, SonarAxes a
     centres.push_back(bearings[b]);
   }
   std::vector<std::string> notes;
-  const RangeBins range = rangeBinsOf(msg.ranges_m, source, place);
+  const RangeBins range = rangeBinsOf(msg.ranges_m, source, place, notes);
   const double aperture = apertureOf(msg, aperture_deg, notes);
   BagSonarGeometry g{SonarModel(sonar_id, range, BearingTable::fromCentres(centres), aperture),
                      resolved,

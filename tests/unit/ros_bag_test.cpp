@@ -11,11 +11,13 @@
 
 #include "common/angles.h"
 #include "io/bag_navigation.h"
+#include "io/bag_sonar.h"
 #include "io/bag_writer.h"
 #include "io/cdr.h"
 #include "io/frame_source.h"
 #include "io/mcap_writer.h"
 #include "io/ros_bag.h"
+#include "io/ros_frames.h"
 #include "io/ros_messages.h"
 #include "support/bag_fixtures.h"
 #include "support/test_support.h"
@@ -288,6 +290,37 @@ TEST(RosBag, TheOlderSonarImageIsReadInItsOwnFrameAndLayout) {
   const Polar polar = mission.sonar.pixelCentre({at.y, at.x});
   EXPECT_NEAR(radToDeg(polar.bearing_rad), 20.0, 1e-5);  // float32 azimuths
   EXPECT_NEAR(polar.range_m, 5.05, 1e-5);
+}
+
+TEST(RosBag, RangesAreBinCentresAndAFirstCentreAtZeroIsSaid) {
+  ProjectedSonarImageMsg msg;
+  for (int b = 0; b < 3; ++b) {
+    msg.beam_directions.push_back(
+        beamDirectionOfBearing(degToRad(10.0 * (b - 1)), SonarAxes::ZForward));
+  }
+  msg.beam_count = 3;
+  msg.ranges_m = {1.05F, 1.15F, 1.25F, 1.35F};
+  BagSonarGeometry g = bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor, std::nullopt,
+                                        "s", "bag", "message 0");
+  EXPECT_NEAR(g.sonar.range().min_m, 1.0, 1e-6);  // centres: the bins start half a bin before
+  EXPECT_NEAR(g.sonar.range().resolution_m, 0.1, 1e-6);
+  EXPECT_NEAR(radToDeg(g.sonar.verticalAperture()), kBagDefaultApertureDeg, 1e-9);
+  msg.ranges_m = {0.0F, 0.1F, 0.2F, 0.3F};
+  g = bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor, std::nullopt, "s", "bag",
+                       "message 0");
+  EXPECT_EQ(g.sonar.range().min_m, 0.0);
+  bool said = false;
+  for (const std::string& note : g.notes) {
+    said |= note.find("less than half a bin") != std::string::npos;
+  }
+  EXPECT_TRUE(said);
+  msg.ranges_m = {1.0F, 1.1F, 1.3F, 1.4F};
+  test::expectError(
+      [&] {
+        bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor, std::nullopt, "s", "bag",
+                         "message 0");
+      },
+      {"bag", "message 0", "ranges[", "expected equally spaced range bins"});
 }
 
 TEST(RosBag, PoseFramesFollowREP103UnlessTheirNamesSayNedAndFrd) {
