@@ -10,6 +10,8 @@ packages=(
   libeigen3-dev liboctomap-dev libembree-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   zlib1g-dev
+  # ROS 2 bags: SQLite3 storage, lz4 and zstd chunks of MCAP files
+  libsqlite3-dev liblz4-dev libzstd-dev
   libvtk9-dev
   # GUI
   qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri

@@ -1,5 +1,6 @@
-// `sonarcarve-cli import --format oculus LOG --out MISSION [--nav NAV.csv --nav-map MAP.yaml
-//  --mounting M.yaml --time-offset S]`: a vendor log (and its navigation) as a mission folder.
+// `sonarcarve-cli import [--format auto|oculus] LOG --out MISSION [--nav NAV.csv --nav-map
+//  MAP.yaml --mounting M.yaml --time-offset S ...]`: a vendor log or a ROS 2 bag (and its
+//  navigation) as a mission folder.
 #include <iostream>
 
 #include "cli/commands.h"
@@ -12,16 +13,20 @@ namespace sonarcarve::cli {
 namespace {
 
 struct Options {
-  std::string format = "oculus";
+  std::string format = "auto";
   std::string log, out, name;
   SourceFlags source;
 };
 
 int runImport(const Options& o) {
-  if (o.format != "oculus") {
-    throw Error("--format", "", "unknown format '" + o.format + "': this build imports oculus");
+  if (o.format != "auto" && o.format != "oculus") {
+    throw Error("--format", "", "unknown format '" + o.format + "': expected auto or oculus");
   }
   const OpenOptions open = openOptionsFrom(o.source);
+  // Oculus logs through their importer, which also explains what is wrong with a file that no
+  // reader recognises.
+  const std::optional<std::string> reader = recognisingReader(o.log);
+  const bool oculus = o.format == "oculus" || !reader || *reader == "oculus";
   ImportRequest request;
   request.log = o.log;
   request.out = o.out;
@@ -35,7 +40,8 @@ int runImport(const Options& o) {
   TerminalProgress progress;
   ImportReport report;
   try {
-    report = importOculusToMission(request, progress);
+    report = oculus ? importOculusToMission(request, progress)
+                    : importRecordingToMission(request, open, progress);
   } catch (const Cancelled&) {
     progress.finish();
     std::cout << "cancelled: " << o.out << " is unfinished (no mission.yaml)\n";
@@ -60,11 +66,15 @@ int runImport(const Options& o) {
 }  // namespace
 
 void addImportCommand(CLI::App& app, int& exit_code) {
-  auto* cmd = app.add_subcommand("import", "Import a vendor sonar log into a mission folder");
+  auto* cmd = app.add_subcommand("import",
+                                 "Import a vendor sonar log or a ROS 2 bag into a mission folder");
   auto o = std::make_shared<Options>();
-  cmd->add_option("--format", o->format, "Log format: oculus")->capture_default_str();
+  cmd->add_option("--format", o->format,
+                  "auto: by content (Oculus logs, ARIS recordings, ROS 2 bags); oculus")
+      ->capture_default_str();
   cmd->add_option("log", o->log,
-                  "The log: Oculus messages back to back, or an Oculus ViewPoint .oculus file")
+                  "The log: Oculus messages or an Oculus ViewPoint .oculus file, an ARIS "
+                  "recording, a ROS 2 bag (.mcap, .db3 or its folder)")
       ->required();
   cmd->add_option("--out", o->out, "Mission folder to create (new or empty)")->required();
   cmd->add_option("--name", o->name, "Mission name (default: the log's file name)");

@@ -156,7 +156,7 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
   auto source = std::make_shared<SourceFlags>();
   cmd->add_option("mission", *path,
                   "Mission folder or its mission.yaml, or a vendor log (Oculus messages, "
-                  ".oculus or .aris recording)")
+                  ".oculus or .aris recording, ROS 2 bag: .mcap, .db3 or its folder)")
       ->required();
   cmd->add_flag("--json", *json, "Print the summary as JSON for scripts");
   addSourceFlags(*cmd, *source);
@@ -174,12 +174,16 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
       j["folder"] = mission.folder.string();
       j["source"] = mission.source->kind();
       j["warnings"] = mission.warnings;
+      j["contents"] = mission.contents;
       std::cout << j.dump(2) << "\n";
     } else {
       std::printf("Mission      %s (%s, %s)\n", summary.name.c_str(),
                   mission.folder.string().c_str(), mission.source->kind().c_str());
       printText(mission.sonar, summary);
       printFrameTimes(mission);
+      for (const std::string& line : mission.contents) {
+        std::printf("Recording    %s\n", line.c_str());
+      }
       for (const std::string& warning : mission.warnings) {
         std::printf("Note         %s\n", warning.c_str());
       }

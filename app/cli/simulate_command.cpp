@@ -10,6 +10,8 @@
 #include "common/error.h"
 #include "common/input_limits.h"
 #include "geometry/scene_io.h"
+#include "io/bag_writer.h"
+#include "io/mission.h"
 #include "io/output_folder.h"
 #include "sim/demo_scenes.h"
 #include "sim/simulation_run.h"
@@ -34,6 +36,7 @@ struct SimulateOptions {
   float reflectivity = 0.8f;
   bool empty_water = false;
   bool force = false;
+  std::string format = "folder";
 };
 
 NavErrorSpec navErrorWithSeed(NavErrorSpec spec, std::uint64_t seed) {
@@ -102,7 +105,20 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
             << result.frames_written << " frames of '" << request.scene.name << "' ("
             << request.trajectory.kind << ") to " << out.string() << "; " << result.visible_points
             << " visible surface points\n";
-  return result.cancelled ? 130 : 0;
+  if (result.cancelled) {
+    return 130;
+  }
+  if (o.format != "folder") {
+    // The same mission as a ROS 2 bag beside the folder's files (ground truth and all).
+    BagWriteOptions bag;
+    bag.format = enumFromString<BagFormat>(o.format).value_or(BagFormat::Mcap);
+    const std::filesystem::path file =
+        out / (bag.format == BagFormat::Db3 ? "mission.db3" : "mission.mcap");
+    const BagWriteReport written = writeRosBag(readMission(out), file, bag);
+    std::cout << "wrote " << written.frames << " frames and " << written.poses
+              << " poses as a ROS 2 bag (" << o.format << ") to " << file.string() << "\n";
+  }
+  return 0;
 }
 
 }  // namespace
@@ -151,6 +167,12 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   cmd->add_flag("--empty-water", o->empty_water,
                 "Frames of empty water (noise only), to learn a noise model from");
   cmd->add_flag("--force", o->force, "Overwrite a mission already in --out");
+  cmd->add_option("--format", o->format,
+                  "folder: the mission folder only; mcap (zstd chunks), mcap-lz4, mcap-none, "
+                  "mcap-unchunked, db3: also the mission as a ROS 2 bag, DIR/mission.mcap or "
+                  "DIR/mission.db3 (docs/formats.md)")
+      ->check(CLI::IsMember({"folder", "mcap", "mcap-lz4", "mcap-none", "mcap-unchunked", "db3"}))
+      ->capture_default_str();
   cmd->callback([o, &pool, &exit_code] { exit_code = runSimulate(*o, pool); });
 }
 

@@ -41,6 +41,32 @@ void addSourceFlags(CLI::App& cmd, SourceFlags& flags) {
       ->capture_default_str();
   cmd.add_option("--aperture-deg", flags.aperture_deg,
                  "Vertical aperture (Oculus default: 20 below 1.5 MHz, 12 above)");
+  cmd.add_option("--beam-pattern", flags.beam_pattern,
+                 "Elevation beam of a recording that does not say: sinc (a real array's main "
+                 "lobe, the default) or clipped (nothing outside +-aperture/2, as our simulator's "
+                 "default beam)")
+      ->check(CLI::IsMember({"sinc", "clipped"}));
+  cmd.add_option("--sonar-topic", flags.sonar_topic,
+                 "ROS 2 bag: the sonar image topic (default: the only ProjectedSonarImage one)");
+  cmd.add_option("--nav-topic", flags.nav_topic,
+                 "ROS 2 bag: the navigation topic (default: the only Odometry, PoseStamped or "
+                 "PoseWithCovarianceStamped one)");
+  cmd.add_option("--sonar-axes", flags.sonar_axes,
+                 "ROS 2 bag: frame of the beam directions: z-forward (the message comment: Z "
+                 "forward, X up), x-forward (X forward, Y left, as some simulators), frd (X "
+                 "forward, Y starboard, Z down), auto")
+      ->check(CLI::IsMember({"auto", "z-forward", "x-forward", "frd"}))
+      ->capture_default_str();
+  cmd.add_option("--image-layout", flags.image_layout,
+                 "ROS 2 bag: order of the image data: range-major (data[range * beams + beam]) "
+                 "or beam-major (data[beam * ranges + range])")
+      ->check(CLI::IsMember({"range-major", "beam-major"}))
+      ->capture_default_str();
+  cmd.add_option("--time-source", flags.time_source,
+                 "ROS 2 bag: frame and pose times from the header stamps or the bag's receive "
+                 "times")
+      ->check(CLI::IsMember({"header", "receive"}))
+      ->capture_default_str();
 }
 
 OpenOptions openOptionsFrom(const SourceFlags& flags) {
@@ -51,6 +77,16 @@ OpenOptions openOptionsFrom(const SourceFlags& flags) {
   if (flags.aperture_deg > 0.0) {
     options.vertical_aperture_deg = flags.aperture_deg;
   }
+  if (!flags.beam_pattern.empty()) {
+    options.elevation_beam =
+        flags.beam_pattern == "clipped" ? ElevationBeam::Clipped : ElevationBeam::MainLobe;
+  }
+  options.bag.sonar_topic = flags.sonar_topic;
+  options.bag.nav_topic = flags.nav_topic;
+  options.bag.axes = enumFromString<SonarAxes>(flags.sonar_axes).value_or(SonarAxes::Auto);
+  options.bag.layout =
+      enumFromString<ImageLayout>(flags.image_layout).value_or(ImageLayout::RangeMajor);
+  options.bag.time = enumFromString<BagTime>(flags.time_source).value_or(BagTime::Header);
   if (!flags.nav_map.empty()) {
     options.nav_mapping = readNavMapping(flags.nav_map);
   }

@@ -13,6 +13,9 @@ inline constexpr int kMaxBeams = 4096;
 inline constexpr int kMaxRangeBins = 16384;
 /// Pixels of one frame (beams x range bins), 64 MB as floats; real frames are below 4 M.
 inline constexpr std::int64_t kMaxFramePixels = std::int64_t{1} << 24;
+/// Uncompressed bytes of one chunk of an MCAP bag: recorders write chunks of 1 to 8 MB (a
+/// message larger than that gets a chunk of its own, and a sonar frame is below 64 MB).
+inline constexpr std::uint64_t kMaxBagChunkBytes = std::uint64_t{256} << 20;
 /// Voxels in the box a map covers (its bounds over the voxel size cubed): the riser demo at
 /// the default voxel size needs about 3 % of this.
 inline constexpr double kMaxMapVoxels = 4.0e9;

@@ -81,19 +81,8 @@ Mission openArisFile(const std::filesystem::path& path, const OpenOptions& optio
   for (const ArisFrameInfo& f : file->frames()) {
     times.push_back(f.time_us * 1e-6 + options.time_offset_s);
   }
-  Mission mission{path,
-                  path.filename().string(),
-                  sonar,
-                  Mounting{},
-                  stationaryTrack(times),
-                  {},
-                  "",
-                  "",
-                  nullptr,
-                  {}};
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    mission.frames.push_back({times[k], sonar.id(), "frame " + std::to_string(k), 0});
-  }
+  Mission mission = recordingMission(path, sonar, times,
+                                     [](std::size_t k) { return "frame " + std::to_string(k); });
   for (const std::string& problem : file->problems()) {
     mission.warnings.push_back(problem);
   }

@@ -1,5 +1,5 @@
 // FrameSource: where a mission's sonar frames come from, and the registry of readers that
-// open a recording by its content. A mission folder (PNG frames), an Oculus log, and later ROS
+// open a recording by its content. A mission folder (PNG frames), an Oculus log, ROS 2
 // bags or ARIS files all become a Mission whose frames a FrameSource reads on demand, so the
 // pipeline, the CLI and the GUI work on any of them without conversion.
 //
@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "io/bag_options.h"
 #include "io/mission.h"
 #include "io/nav_import.h"
 
@@ -41,6 +42,10 @@ struct OpenOptions {
   std::filesystem::path mounting;  ///< mounting YAML; empty: the recording's own, or aligned
   double time_offset_s = 0.0;      ///< added to the recording's frame times
   std::optional<double> vertical_aperture_deg;  ///< override for sonars that do not say
+  /// Override of the elevation beam (recordings do not say: a real array's is MainLobe, the
+  /// default; a simulator's may be Clipped).
+  std::optional<ElevationBeam> elevation_beam;
+  BagOptions bag;  ///< topics and conventions of a ROS 2 bag
 };
 
 struct FrameSourceReader {
@@ -57,15 +62,26 @@ bool registerFrameSourceReader(FrameSourceReader reader);
 /// The registered readers' names, in the order they are asked.
 std::vector<std::string> frameSourceReaderNames();
 
+/// The name of the first registered reader that recognises `path`, if any. Never throws.
+std::optional<std::string> recognisingReader(const std::filesystem::path& path);
+
 /// Opens a mission folder, its mission.yaml or any recording a registered reader recognises.
 /// Throws Error naming the path and the kinds known when no reader recognises it.
 Mission openMission(const std::filesystem::path& path, const OpenOptions& options = {});
 
+/// The mission of a recording opened in place, before its navigation: named after the file,
+/// with `sonar`, one frame record per time (labelled by `label(k)`: "ping 12") and a vehicle
+/// stationary at the origin over those times. The reader then sets its source, warnings and
+/// navigation.
+Mission recordingMission(const std::filesystem::path& path, const SonarModel& sonar,
+                         const std::vector<double>& times_s,
+                         const std::function<std::string(std::size_t)>& label);
+
 /// Applies the options' navigation, mounting and time offset to an opened mission (readers
 /// call it; a navigation or mounting given by the user replaces the recording's own).
 void applyOpenOptions(Mission& mission, const OpenOptions& options);
-/// Only the options' navigation and mounting (for readers that apply the time offset and the
-/// aperture while building the mission).
+/// Only the options' navigation, mounting and elevation beam (for readers that apply the time
+/// offset and the aperture while building the mission).
 void applyNavigationAndMounting(Mission& mission, const OpenOptions& options);
 
 }  // namespace sonarcarve

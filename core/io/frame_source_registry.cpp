@@ -44,6 +44,15 @@ std::vector<std::string> frameSourceReaderNames() {
   return names;
 }
 
+std::optional<std::string> recognisingReader(const std::filesystem::path& path) {
+  for (const FrameSourceReader& reader : readers()) {
+    if (reader.recognises(path)) {
+      return reader.name;
+    }
+  }
+  return std::nullopt;
+}
+
 Mission openMission(const std::filesystem::path& path, const OpenOptions& options) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
@@ -63,6 +72,26 @@ Mission openMission(const std::filesystem::path& path, const OpenOptions& option
               "not a recording this build reads (expected one of: " + known + ")");
 }
 
+Mission recordingMission(const std::filesystem::path& path, const SonarModel& sonar,
+                         const std::vector<double>& times_s,
+                         const std::function<std::string(std::size_t)>& label) {
+  Mission mission{path,
+                  path.filename().string(),
+                  sonar,
+                  Mounting{},
+                  stationaryTrack(times_s),
+                  {},
+                  "",
+                  "",
+                  nullptr,
+                  {},
+                  {}};
+  for (std::size_t k = 0; k < times_s.size(); ++k) {
+    mission.frames.push_back({times_s[k], sonar.id(), label(k), 0});
+  }
+  return mission;
+}
+
 void applyOpenOptions(Mission& mission, const OpenOptions& options) {
   if (!options.nav_csv.empty()) {
     mission.nav = importNavCsv(options.nav_csv, options.nav_mapping);
@@ -78,6 +107,9 @@ void applyOpenOptions(Mission& mission, const OpenOptions& options) {
   }
   if (options.vertical_aperture_deg) {
     mission.sonar = mission.sonar.withVerticalAperture(degToRad(*options.vertical_aperture_deg));
+  }
+  if (options.elevation_beam) {
+    mission.sonar = mission.sonar.withElevationBeam(*options.elevation_beam);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <tuple>
@@ -113,6 +114,48 @@ Mounting readMountingYaml(const std::filesystem::path& path) {
                           : mountingFromYaml(root, fields, "mounting");
 }
 
+namespace {
+
+// Writes a mission folder (new or empty) of `count` frames; a frame that cannot be read is
+// reported in `report` and left out.
+void writeMissionFolder(const ImportRequest& request, const SonarModel& sonar,
+                        const Mounting& mounting, const NavTrack& nav, std::size_t count,
+                        const std::function<Frame(std::size_t)>& frame_at, Progress& progress,
+                        ImportReport& report) {
+  std::error_code ec;
+  if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_directory(request.out, ec)) {
+    throw Error(request.out.string(), "", "is a file: expected a new or empty folder");
+  }
+  if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_empty(request.out, ec)) {
+    throw Error(request.out.string(), "",
+                "output folder exists and is not empty: choose a new folder");
+  }
+  const std::string name = request.name.empty() ? request.log.filename().string() : request.name;
+  MissionWriter writer(request.out, name, sonar, mounting);
+  for (std::size_t k = 0; k < count; ++k) {
+    if (progress.cancelled()) {
+      throw Cancelled();
+    }
+    progress.report("writing frames", k, count);
+    Frame frame;
+    try {
+      frame = frame_at(k);
+    } catch (const Error& e) {
+      report.problems.push_back(std::string(e.what()) + " (frame skipped)");
+      continue;
+    }
+    writer.addFrame(frame);
+  }
+  if (writer.frameCount() == 0) {
+    throw Error(request.log.string(), "", "no frame could be decoded");
+  }
+  writer.finish(nav);
+  progress.report("writing frames", count, count);
+  report.frames_written = writer.frameCount();
+}
+
+}  // namespace
+
 ImportReport importOculusToMission(const ImportRequest& request, Progress& progress) {
   progress.report("reading the log", 0, 1);
   const OculusLog log = OculusLog::open(request.log);
@@ -149,40 +192,32 @@ ImportReport importOculusToMission(const ImportRequest& request, Progress& progr
                               " frames lie outside the navigation's time span (check the time "
                               "offset): they cannot be placed in the world");
   }
-  std::error_code ec;
-  if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_directory(request.out, ec)) {
-    throw Error(request.out.string(), "", "is a file: expected a new or empty folder");
-  }
-  if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_empty(request.out, ec)) {
-    throw Error(request.out.string(), "",
-                "output folder exists and is not empty: choose a new folder");
-  }
+  writeMissionFolder(
+      request, plan.sonar, mounting, *nav, plan.pings.size(),
+      [&](std::size_t k) {
+        return Frame{plan.frame_times_s[k], plan.sonar.id(), log.decode(plan.pings[k]).image};
+      },
+      progress, report);
+  return report;
+}
 
-  const std::string name = request.name.empty() ? request.log.filename().string() : request.name;
-  MissionWriter writer(request.out, name, plan.sonar, mounting);
-  const std::size_t total = plan.pings.size();
-  for (std::size_t k = 0; k < total; ++k) {
-    if (progress.cancelled()) {
-      throw Cancelled();
-    }
-    progress.report("writing frames", k, total);
-    Frame frame;
-    frame.time_s = plan.frame_times_s[k];
-    frame.sonar_id = plan.sonar.id();
-    try {
-      frame.image = log.decode(plan.pings[k]).image;
-    } catch (const Error& e) {
-      report.problems.push_back(std::string(e.what()) + " (frame skipped)");
-      continue;
-    }
-    writer.addFrame(frame);
+ImportReport importRecordingToMission(const ImportRequest& request, const OpenOptions& options,
+                                      Progress& progress) {
+  progress.report("reading the recording", 0, 1);
+  const Mission mission = openMission(request.log, options);
+  ImportReport report;
+  report.mission = request.out;
+  report.container = mission.source->kind();
+  report.time_base = "the recording's own";
+  report.pings_in_log = mission.frames.size();
+  report.notes = mission.contents;
+  report.warnings = mission.warnings;
+  for (const FrameRecord& frame : mission.frames) {
+    report.frames_outside_nav += mission.nav.covers(frame.time_s) ? 0 : 1;
   }
-  if (writer.frameCount() == 0) {
-    throw Error(request.log.string(), "", "no frame could be decoded");
-  }
-  writer.finish(*nav);
-  progress.report("writing frames", total, total);
-  report.frames_written = writer.frameCount();
+  writeMissionFolder(
+      request, mission.sonar, mission.mounting, mission.nav, mission.frames.size(),
+      [&](std::size_t k) { return loadFrame(mission, k); }, progress, report);
   return report;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/progress.h"
+#include "io/frame_source.h"
 #include "io/nav_import.h"
 #include "io/oculus_log.h"
 #include "sonar/mounting.h"
@@ -73,6 +74,12 @@ struct ImportReport {
 /// Imports an Oculus log. Throws Error on an unusable log, navigation or mounting, and
 /// Cancelled if `progress` asks to stop (the folder then lacks mission.yaml: unfinished).
 ImportReport importOculusToMission(const ImportRequest& request, Progress& progress);
+
+/// Imports any recording openMission() reads (ARIS files, ROS 2 bags, ...) with `options`
+/// (the request's log, out and name are used; its other fields are in `options`). The mission
+/// keeps the recording's sonar (elevation beam included), navigation and mounting.
+ImportReport importRecordingToMission(const ImportRequest& request, const OpenOptions& options,
+                                      Progress& progress);
 
 /// Reads a mounting YAML: a `mounting:` mapping, or its keys at the top level.
 Mounting readMountingYaml(const std::filesystem::path& path);

@@ -161,9 +161,17 @@ Mission readMission(const std::filesystem::path& folder_or_yaml) {
   NavTrack nav = readNavCsv(folder / nav_file);
   std::vector<FrameRecord> frames =
       readFrameIndex(folder / index_file, allowsFilesOutside(frames_node, fields));
-  Mission mission{
-      folder,   std::move(name), std::move(sonar), mounting, std::move(nav), std::move(frames),
-      nav_file, index_file,      nullptr,          {}};
+  Mission mission{folder,
+                  std::move(name),
+                  std::move(sonar),
+                  mounting,
+                  std::move(nav),
+                  std::move(frames),
+                  nav_file,
+                  index_file,
+                  nullptr,
+                  {},
+                  {}};
   mission.source = makeMissionFolderSource(mission);
   return mission;
 }

@@ -49,6 +49,9 @@ struct Mission {
   /// What the reader assumed or skipped that the user should know (printed by the CLI,
   /// logged by the GUI).
   std::vector<std::string> warnings;
+  /// What the recording holds beyond its frames, one line each (a bag's topics with their
+  /// types and message counts, and the conventions assumed), for `info`.
+  std::vector<std::string> contents;
 };
 
 /// A frame that could not be used, with the reason.

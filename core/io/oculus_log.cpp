@@ -1,9 +1,5 @@
 #include "io/oculus_log.h"
 
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -14,27 +10,10 @@
 #include <optional>
 
 #include "common/error.h"
-#include "io/input_file.h"
+#include "io/mapped_file.h"
 #include "io/oculus_resync.h"
 
 namespace sonarcarve {
-
-// The bytes of a log: a read-only memory map of the file, or a vector.
-struct OculusLog::Storage {
-  std::vector<std::uint8_t> owned;
-  void* map = nullptr;
-  std::size_t map_size = 0;
-  std::span<const std::uint8_t> bytes;
-
-  Storage() = default;
-  Storage(const Storage&) = delete;
-  Storage& operator=(const Storage&) = delete;
-  ~Storage() {
-    if (map != nullptr) {
-      munmap(map, map_size);
-    }
-  }
-};
 
 namespace {
 
@@ -105,34 +84,6 @@ std::string itemName(std::uint16_t type) {
   }
 }
 
-std::shared_ptr<OculusLog::Storage> mapFile(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  auto storage = std::make_shared<OculusLog::Storage>();
-  requireRegularFile(path, "an Oculus log");
-  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) {
-    throw Error(file, "", "cannot open file (missing or unreadable)");
-  }
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
-    throw Error(file, "", "not a regular file");
-  }
-  const auto size = static_cast<std::size_t>(st.st_size);
-  if (size > 0) {
-    void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
-    if (map == MAP_FAILED) {
-      ::close(fd);
-      throw Error(file, "", "cannot map the file into memory");
-    }
-    storage->map = map;
-    storage->map_size = size;
-    storage->bytes = {static_cast<const std::uint8_t*>(map), size};
-  }
-  ::close(fd);
-  return storage;
-}
-
 // True if the message at `offset` is kept with the size it claims although that size does not
 // lead to another message: no confirmed message starts inside it and, for a ping, it decodes.
 bool keepsItsSize(std::span<const std::uint8_t> bytes, std::size_t offset, std::size_t next) {
@@ -191,25 +142,22 @@ void OculusLog::addProblem(const Error& error, const std::string& consequence) {
 
 OculusLog OculusLog::open(const std::filesystem::path& path) {
   OculusLog log;
-  log.storage_ = mapFile(path);
+  log.storage_ = MappedFile::map(path, "an Oculus log");
   log.source_ = path.string();
   log.index();
   return log;
 }
 
 OculusLog OculusLog::fromBytes(std::vector<std::uint8_t> bytes, std::string source) {
-  auto storage = std::make_shared<Storage>();
-  storage->owned = std::move(bytes);
-  storage->bytes = storage->owned;
   OculusLog log;
-  log.storage_ = storage;
+  log.storage_ = MappedFile::fromBytes(std::move(bytes));
   log.source_ = std::move(source);
   log.index();
   return log;
 }
 
 void OculusLog::index() {
-  const std::span<const std::uint8_t> bytes = storage_->bytes;
+  const std::span<const std::uint8_t> bytes = storage_->bytes();
   if (bytes.empty()) {
     throw Error(source_, bytePlace(0),
                 "empty file: expected Oculus messages or an Oculus ViewPoint recording");
@@ -319,7 +267,7 @@ std::size_t OculusLog::skipCorruptBytes(std::span<const std::uint8_t> bytes, std
 }
 
 void OculusLog::indexRecording() {
-  const std::span<const std::uint8_t> bytes = storage_->bytes;
+  const std::span<const std::uint8_t> bytes = storage_->bytes();
   if (bytes.size() < kFileHeaderSize) {
     throw Error(
         source_, bytePlace(bytes.size()),
@@ -427,7 +375,7 @@ void OculusLog::indexRecording() {
 std::vector<std::uint8_t> OculusLog::inflateItem(std::size_t item) const {
   // qCompress: the uncompressed size as a big-endian u32, then a zlib stream.
   const CompressedItem& c = compressed_items_.at(item);
-  const std::span<const std::uint8_t> bytes = storage_->bytes;
+  const std::span<const std::uint8_t> bytes = storage_->bytes();
   const std::string where = source_;
   if (c.payload_size < 4) {
     throw Error(where, bytePlace(c.payload_offset),
@@ -468,7 +416,7 @@ OculusPing OculusLog::decode(std::size_t index) const {
     const std::vector<std::uint8_t> inflated = inflateItem(static_cast<std::size_t>(entry.item));
     return decodeOculusPing(inflated, offset, source_ + " (compressed item)");
   }
-  return decodeOculusPing(storage_->bytes, offset, source_);
+  return decodeOculusPing(storage_->bytes(), offset, source_);
 }
 
 bool looksLikeOculusLog(const std::filesystem::path& path) {

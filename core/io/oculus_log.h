@@ -30,6 +30,8 @@
 
 namespace sonarcarve {
 
+class MappedFile;
+
 struct OculusLogEntry {
   OculusPing ping;      ///< decoded without the image
   double time_s = 0.0;  ///< on the sonar's clock (see OculusLog::timeBase())
@@ -71,7 +73,6 @@ class OculusLog {
   /// Ping `index` with its image. Throws Error if it cannot be decoded.
   OculusPing decode(std::size_t index) const;
 
-  struct Storage;
   struct CompressedItem {
     std::size_t payload_offset = 0;
     std::uint32_t payload_size = 0;
@@ -89,7 +90,7 @@ class OculusLog {
   std::vector<std::uint8_t> inflateItem(std::size_t item) const;
   void addProblem(const Error& error, const std::string& consequence);
 
-  std::shared_ptr<const Storage> storage_;
+  std::shared_ptr<const MappedFile> storage_;
   std::string source_;
   std::string container_;
   std::string time_base_;

@@ -34,20 +34,10 @@ Mission openOculusLog(const std::filesystem::path& path, const OpenOptions& opti
   // Times and aperture go through the plan; navigation and mounting through the options.
   OculusImportPlan plan =
       planOculusImport(*log, options.time_offset_s, options.vertical_aperture_deg);
-  Mission mission{path,
-                  path.filename().string(),
-                  plan.sonar,
-                  Mounting{},
-                  stationaryTrack(plan.frame_times_s),
-                  {},
-                  "",
-                  "",
-                  nullptr,
-                  plan.warnings};
-  for (std::size_t k = 0; k < plan.pings.size(); ++k) {
-    mission.frames.push_back(
-        {plan.frame_times_s[k], plan.sonar.id(), "ping " + std::to_string(plan.pings[k]), 0});
-  }
+  Mission mission = recordingMission(path, plan.sonar, plan.frame_times_s, [&](std::size_t k) {
+    return "ping " + std::to_string(plan.pings[k]);
+  });
+  mission.warnings = plan.warnings;
   for (const std::string& problem : log->problems()) {
     mission.warnings.push_back(problem + " (skipped)");
   }

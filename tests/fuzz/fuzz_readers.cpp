@@ -5,18 +5,22 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string_view>
 
 #include "common/error.h"
 #include "denoise/noise_model.h"
 #include "geometry/scene_io.h"
 #include "io/aris_file.h"
+#include "io/bag_sonar.h"
 #include "io/frame_png.h"
 #include "io/mission.h"
 #include "io/nav_import.h"
 #include "io/oculus_log.h"
 #include "io/ply_check.h"
 #include "io/point_cloud_ply.h"
+#include "io/ros_bag.h"
+#include "io/ros_messages.h"
 #include "io/session_file.h"
 #include "pipeline/reconstruction_params.h"
 
@@ -80,7 +84,53 @@ void acceptingErrors(Run run) {
   }
 }
 
+// Every message of a bag decoded as its topic's type, as the bag frame source does.
+void decodeBag(const RosBag& bag) {
+  const std::string source = bag.path().string();
+  std::optional<BagSonarGeometry> geometry;
+  for (const BagMessage& m : bag.messages()) {
+    acceptingErrors([&] {
+      const std::vector<std::uint8_t> bytes = bag.payload(m);
+      const std::string& type = bag.topics().at(m.topic).type;
+      switch (rosMessageKind(type)) {
+        case RosMessageKind::SonarImage: {
+          const ProjectedSonarImageMsg msg = decodeSonarImage(type, bytes, source, m.place);
+          if (!geometry) {
+            const bool legacy = isLegacySonarImage(type);
+            geometry = bagSonarGeometry(msg, legacy ? SonarAxes::Frd : SonarAxes::Auto,
+                                        legacy ? ImageLayout::BeamMajor : ImageLayout::RangeMajor,
+                                        std::nullopt, "fuzz", source, m.place);
+          }
+          bagSonarImage(msg, *geometry, source, m.place);
+          break;
+        }
+        case RosMessageKind::VehiclePose:
+          decodeRosPose(type, bytes, source, m.place);
+          break;
+        case RosMessageKind::Transforms:
+          decodeTfMessage(bytes, source, m.place);
+          break;
+        case RosMessageKind::Other:
+          decodeRosHeader(bytes, source, m.place);
+          break;
+      }
+    });
+  }
+}
+
 }  // namespace
+
+void mcapBag(std::span<const std::uint8_t> bytes) {
+  const auto path = scratch() / "fuzz.mcap";
+  write(path, text(bytes));
+  acceptingErrors([&] { decodeBag(*openMcapBag(path)); });
+}
+
+void sqliteBag(std::span<const std::uint8_t> bytes) {
+  const auto path = scratch() / "fuzz.db3";
+  write(path, text(bytes));
+  acceptingErrors([&] { decodeBag(*openSqliteBag(path)); });
+}
 
 void oculusLog(std::span<const std::uint8_t> bytes) {
   acceptingErrors([&] {
@@ -163,11 +213,11 @@ void referenceMesh(std::span<const std::uint8_t> bytes) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {{"oculus", oculusLog},       {"mission", mission},
-                                          {"frame_png", framePng},     {"ply", plyPointCloud},
-                                          {"nav_import", navImport},   {"params_yaml", paramsYaml},
-                                          {"noise_model", noiseModel}, {"mesh", referenceMesh},
-                                          {"session", sessionFile},    {"aris", arisFile}};
+  static const std::vector<Target> all = {
+      {"oculus", oculusLog},       {"mission", mission},      {"frame_png", framePng},
+      {"ply", plyPointCloud},      {"nav_import", navImport}, {"params_yaml", paramsYaml},
+      {"noise_model", noiseModel}, {"mesh", referenceMesh},   {"session", sessionFile},
+      {"aris", arisFile},          {"mcap", mcapBag},         {"db3", sqliteBag}};
   return all;
 }
 

@@ -34,6 +34,11 @@ void noiseModel(std::span<const std::uint8_t> bytes);
 void referenceMesh(std::span<const std::uint8_t> bytes);
 /// An ARIS recording: ArisFile::open, then every frame's image.
 void arisFile(std::span<const std::uint8_t> bytes);
+/// A ROS 2 bag in MCAP storage: openMcapBag, then every message's payload decoded as its
+/// topic's type (sonar images also converted to frames).
+void mcapBag(std::span<const std::uint8_t> bytes);
+/// A ROS 2 bag in SQLite3 storage (.db3): openSqliteBag, then the same decoding.
+void sqliteBag(std::span<const std::uint8_t> bytes);
 /// A workbench session file (loadSession: YAML with the parameters embedded).
 void sessionFile(std::span<const std::uint8_t> bytes);
 

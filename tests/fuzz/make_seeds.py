@@ -5,7 +5,10 @@ Run from the repository root. Crash inputs found by fuzzing are kept beside the 
 (named crash-*, oom-*, timeout-*) and replayed by the unit test FuzzRegression.
 """
 import math
+import sqlite3
 import struct
+import subprocess
+import tempfile
 import zlib
 from pathlib import Path
 
@@ -128,6 +131,160 @@ def aris_recording(frames=2, samples=4):
     return bytes(b)
 
 
+class Cdr:
+    """Little-endian CDR: primitives aligned to their size after the 4-byte header."""
+
+    def __init__(self):
+        self.b = bytearray(b"\x00\x01\x00\x00")
+
+    def put(self, fmt, *values):
+        size = struct.calcsize("<" + fmt[-1])
+        while (len(self.b) - 4) % size:
+            self.b.append(0)
+        self.b += struct.pack("<" + fmt, *values)
+
+    def string(self, text):
+        self.put("I", len(text) + 1)
+        self.b += text.encode() + b"\0"
+
+    def header(self, t_ns, frame):
+        self.put("i", t_ns // 10**9)
+        self.put("I", t_ns % 10**9)
+        self.string(frame)
+
+
+def sonar_image(t_ns, beams=4, ranges=5):
+    c = Cdr()
+    c.header(t_ns, "sonar")
+    c.put("ff", 900e3, 1500.0)
+    c.put("I", beams)
+    c.put("%df" % beams, *([0.35] * beams))
+    c.put("I", 0)
+    c.put("I", beams)
+    for j in range(beams):
+        a = math.radians(-30 + 60 * (j + 0.5) / beams)
+        c.put("ddd", 0.0, math.sin(a), math.cos(a))
+    c.put("I", ranges)
+    c.put("%df" % ranges, *[0.5 + 0.1 * r for r in range(ranges)])
+    c.put("B", 0)
+    c.put("III", 0, beams, beams * ranges)
+    c.b += bytes((7 * i) % 256 for i in range(beams * ranges))
+    return bytes(c.b)
+
+
+def odometry(t_ns, x):
+    c = Cdr()
+    c.header(t_ns, "odom")
+    c.string("base_link")
+    c.put("ddddddd", x, 0.0, -2.0, 0.0, 0.0, 0.0, 1.0)
+    c.put("36d", *([0.0] * 36))
+    c.put("42d", *([0.0] * 42))
+    return bytes(c.b)
+
+
+def tf_static():
+    c = Cdr()
+    c.put("I", 1)
+    c.header(0, "base_link")
+    c.string("sonar")
+    c.put("ddddddd", 0.3, 0.0, 0.0, 0.5, -0.5, 0.5, -0.5)
+    return bytes(c.b)
+
+
+BAG_TOPICS = [("/sonar/image", "marine_acoustic_msgs/msg/ProjectedSonarImage"),
+              ("/odom", "nav_msgs/msg/Odometry"), ("/tf_static", "tf2_msgs/msg/TFMessage")]
+
+
+def bag_messages():
+    """(topic index, time ns, CDR bytes) of a tiny bag: mounting, 3 poses, 2 sonar pings."""
+    out = [(2, 0, tf_static())]
+    out += [(1, k * 10**9, odometry(k * 10**9, 0.1 * k)) for k in range(3)]
+    out += [(0, k * 10**9 + 5 * 10**8, sonar_image(k * 10**9 + 5 * 10**8)) for k in range(2)]
+    return sorted(out, key=lambda m: m[1])
+
+
+def mcap_record(op, content):
+    return struct.pack("<BQ", op, len(content)) + content
+
+
+def mcap_string(text):
+    return struct.pack("<I", len(text)) + text.encode()
+
+
+def compress(tool, data):
+    if tool == "":
+        return data
+    return subprocess.run([tool, "-q", "-c"], input=data, stdout=subprocess.PIPE, check=True).stdout
+
+
+def mcap_bag(chunks=None):
+    """An MCAP file of bag_messages(): messages in the data section (chunks None) or in one
+    chunk compressed with "", "lz4" or "zstd"; no summary section."""
+    b = b"\x89MCAP0\r\n" + mcap_record(1, mcap_string("ros2") + mcap_string("make_seeds"))
+    for i, (topic, type_name) in enumerate(BAG_TOPICS):
+        b += mcap_record(3, struct.pack("<H", i + 1) + mcap_string(type_name) +
+                         mcap_string("ros2msg") + mcap_string(""))
+        b += mcap_record(4, struct.pack("<HH", i + 1, i + 1) + mcap_string(topic) +
+                         mcap_string("cdr") + struct.pack("<I", 0))
+    records = b"".join(mcap_record(5, struct.pack("<HIQQ", t + 1, n, ns, ns) + data)
+                       for n, (t, ns, data) in enumerate(bag_messages()))
+    if chunks is None:
+        b += records
+    else:
+        stored = compress(chunks, records)
+        b += mcap_record(6, struct.pack("<QQQI", 0, 2 * 10**9, len(records), zlib.crc32(records)) +
+                         mcap_string(chunks) + struct.pack("<Q", len(stored)) + stored)
+    b += mcap_record(15, struct.pack("<I", 0)) + mcap_record(2, bytes(20)) + b"\x89MCAP0\r\n"
+    return b
+
+
+def legacy_sonar_image(t_ns, beams=4, ranges=5):
+    """The older acoustic_msgs/SonarImage: azimuths, azimuth-major uint16 intensities."""
+    c = Cdr()
+    c.header(t_ns, "sonar_ned")
+    c.put("ffff", 900e3, 1500.0, 0.02, 0.35)
+    c.put("I", beams)
+    c.put("%df" % beams, *[math.radians(-30 + 60 * (j + 0.5) / beams) for j in range(beams)])
+    c.put("I", 0)
+    c.put("I", ranges)
+    c.put("%df" % ranges, *[0.5 + 0.1 * r for r in range(ranges)])
+    c.put("B", 0)
+    c.put("B", 2)
+    c.put("I", 2 * beams * ranges)
+    c.b += b"".join(struct.pack("<H", 300 * i) for i in range(beams * ranges))
+    return bytes(c.b)
+
+
+def legacy_mcap_bag():
+    b = b"\x89MCAP0\r\n" + mcap_record(1, mcap_string("ros2") + mcap_string("make_seeds"))
+    b += mcap_record(3, struct.pack("<H", 1) + mcap_string("acoustic_msgs/msg/SonarImage") +
+                     mcap_string("ros2msg") + mcap_string(""))
+    b += mcap_record(4, struct.pack("<HH", 1, 1) + mcap_string("/sonar") + mcap_string("cdr") +
+                     struct.pack("<I", 0))
+    for n in range(2):
+        b += mcap_record(5, struct.pack("<HIQQ", 1, n, n, n) + legacy_sonar_image(n * 10**9))
+    return b + mcap_record(15, struct.pack("<I", 0)) + mcap_record(2, bytes(20)) + b"\x89MCAP0\r\n"
+
+
+def db3_bag(compress_messages=False):
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "bag.db3"
+        db = sqlite3.connect(path)
+        db.executescript(
+            "CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT NOT NULL, type TEXT NOT NULL, "
+            "serialization_format TEXT NOT NULL, offered_qos_profiles TEXT NOT NULL);"
+            "CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id INTEGER NOT NULL, "
+            "timestamp INTEGER NOT NULL, data BLOB NOT NULL);")
+        db.executemany("INSERT INTO topics VALUES(?, ?, ?, 'cdr', '')",
+                       [(i + 1, name, type_name) for i, (name, type_name) in enumerate(BAG_TOPICS)])
+        db.executemany("INSERT INTO messages(topic_id, timestamp, data) VALUES(?, ?, ?)",
+                       [(t + 1, ns, compress("zstd", data) if compress_messages else data)
+                        for t, ns, data in bag_messages()])
+        db.commit()
+        db.close()
+        return path.read_bytes()
+
+
 def main():
     write("oculus", "v0_8bit", oculus_ping(0, 16, 10))
     write("oculus", "v2_16bit_gain", oculus_ping(2, 8, 4, sixteen=True, gain=True))
@@ -178,6 +335,14 @@ def main():
           "format: sonarcarve-session\nversion: 1\nmission: m\n")
     write("aris", "two_frames.aris", aris_recording())
     write("aris", "cut_second_frame.aris", aris_recording()[:-10])
+    write("mcap", "unchunked.mcap", mcap_bag())
+    write("mcap", "chunk_none.mcap", mcap_bag(""))
+    write("mcap", "chunk_lz4.mcap", mcap_bag("lz4"))
+    write("mcap", "chunk_zstd.mcap", mcap_bag("zstd"))
+    write("mcap", "cut_short.mcap", mcap_bag("zstd")[:-60])
+    write("mcap", "legacy_sonar_image.mcap", legacy_mcap_bag())
+    write("db3", "tiny.db3", db3_bag())
+    write("db3", "messages_zstd.db3", db3_bag(compress_messages=True))
 
 
 if __name__ == "__main__":

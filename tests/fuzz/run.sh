@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets built by the fuzz preset, one after another.
 #   tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default 240 s, every target)
-# Targets: oculus mission frame_png ply nav_import params_yaml noise_model mesh session aris. The working corpus grows in
+# Targets: oculus mission frame_png ply nav_import params_yaml noise_model mesh session aris mcap db3. The working corpus grows in
 # build/fuzz/corpus/<target> (the seeds in tests/fuzz/corpus/<target> are read, not written);
 # crash, leak, timeout and out-of-memory inputs land in build/fuzz/artifacts/<target>/. Copy
 # each one into tests/fuzz/corpus/<target>/ once fixed: the unit test FuzzRegression replays it.
@@ -13,9 +13,9 @@ declare -A binary=([oculus]=fuzz_oculusLog [mission]=fuzz_mission [frame_png]=fu
                    [ply]=fuzz_plyPointCloud [nav_import]=fuzz_navImport
                    [params_yaml]=fuzz_paramsYaml [noise_model]=fuzz_noiseModel
                    [mesh]=fuzz_referenceMesh [session]=fuzz_sessionFile
-                   [aris]=fuzz_arisFile)
+                   [aris]=fuzz_arisFile [mcap]=fuzz_mcapBag [db3]=fuzz_sqliteBag)
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(oculus mission frame_png ply nav_import params_yaml noise_model mesh session aris)
+[ ${#targets[@]} -gt 0 ] || targets=(oculus mission frame_png ply nav_import params_yaml noise_model mesh session aris mcap db3)
 status=0
 for t in "${targets[@]}"; do
   exe="build/fuzz/tests/fuzz/${binary[$t]}"

@@ -55,6 +55,7 @@ Mission ringMission(std::size_t frames, std::vector<std::size_t> broken = {},
                   "",
                   "",
                   std::make_shared<RingSource>(frames, std::move(broken)),
+                  {},
                   {}};
   for (std::size_t i = 0; i < frames; ++i) {
     mission.frames.push_back({static_cast<double>(i), "tiny", "frame", 0});

@@ -62,6 +62,7 @@ Mission openToyRecording(const std::filesystem::path& path, const OpenOptions& o
                   "",
                   "",
                   std::make_shared<ToySource>(frames),
+                  {},
                   {}};
   for (std::size_t i = 0; i < frames; ++i) {
     mission.frames.push_back({static_cast<double>(i), "toy", "frame " + std::to_string(i), 0});
