@@ -36,6 +36,7 @@ struct ReconstructOptions {
   SourceFlags source;
   bool save_map = false;
   std::string load_map;
+  bool surface_only = false;
 };
 
 // The --params file (or the defaults), then the flags on top.
@@ -103,8 +104,11 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   // The pipeline checks its parameters and reads a given noise model: a bad one fails before
   // the output folder is made.
   Pipeline pipeline(mission, params, pool);
+  if (o.surface_only && o.load_map.empty()) {
+    throw Error("--surface-only", "", "needs --load-map: the map whose surface to resolve");
+  }
   if (!o.load_map.empty()) {
-    pipeline.startFrom(loadMap(o.load_map));
+    pipeline.startFrom(loadMap(o.load_map), !o.surface_only);
   }
   const std::filesystem::path out(o.out);
   prepareOutputFolder(out);
@@ -160,6 +164,9 @@ void addReconstructCommand(CLI::App& app, ThreadPool& pool,
   cmd->add_option("--load-map", o->load_map,
                   "Start from a map carved before (map.scmap of --save-map, or of merge): this "
                   "run's frames carve into it (fast engine)");
+  cmd->add_flag("--surface-only", o->surface_only,
+                "With --load-map: the frames do not carve, they only resolve the loaded map's "
+                "surface (the last step of a sharded run, docs/scaling.md)");
   o->flags = addParamFlags(*cmd);
   addSourceFlags(*cmd, o->source);
   cmd->callback(

@@ -53,6 +53,11 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
   if (params_.earlier_map) {
     result.carver->fuse(*params_.earlier_map);
   }
+  if (!params_.carve_frames) {
+    result.used = frames;
+    progress.report("carve", frames.size(), frames.size());
+    return result;
+  }
   std::optional<PoseRefiner> refiner;
   if (params_.refinement.enabled && result.carver->blockMap() != nullptr) {
     refiner.emplace(*result.carver->blockMap(), sonar_, result.carve, params_.refinement, pool_);

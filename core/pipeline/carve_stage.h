@@ -24,6 +24,9 @@ struct CarveStageParams {
   /// A map carved before (reconstruct --load-map), fused into this run's map before its
   /// frames carve; the map covers its box too. Null: start from nothing.
   std::shared_ptr<const VoxelMap> earlier_map;
+  /// False: the frames do not carve (the earlier map is final: the last step of a sharded run
+  /// resolves its surface over every frame); they are placed and used as they are.
+  bool carve_frames = true;
 };
 
 /// A frame's pose as navigation gave it and as carving used it.

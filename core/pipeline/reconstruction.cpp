@@ -65,8 +65,8 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     throw Error(mission_.folder.string(), "", "no frame can be placed in the world");
   }
   // Denoise, then carve.
-  CarveStageParams stage{params_.engine, params_.carve, params_.occlusion_aware_carving,
-                         params_.pose_refinement, earlier_map_};
+  CarveStageParams stage{params_.engine,          params_.carve, params_.occlusion_aware_carving,
+                         params_.pose_refinement, earlier_map_,  carve_frames_};
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
   requireBoundedSizes(bounds, sonar_, params_.carve, pool_.size());
@@ -115,7 +115,8 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   result.occupied_voxels = stats.occupied_voxels;
   result.map_bytes = stats.memory_bytes;
   std::sort(carved.carve_ms.begin(), carved.carve_ms.end());
-  result.carve_ms_median = carved.carve_ms[carved.carve_ms.size() / 2];
+  result.carve_ms_median =
+      carved.carve_ms.empty() ? 0.0 : carved.carve_ms[carved.carve_ms.size() / 2];
 
   // Occlusion resolution and the surface.
   SurfaceStageResult surface = resolveSurface(*result.carver, carved.used, sonar_, carved.carve,

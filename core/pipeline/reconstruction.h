@@ -60,8 +60,11 @@ class Pipeline {
   const ReconstructionParams& params() const { return params_; }
   /// Starts carving from a map carved before (reconstruct --load-map; carve/map_file.h): this
   /// run's frames carve into it, and the surface is resolved over this run's frames.
-  void startFrom(std::shared_ptr<const VoxelMap> earlier_map) {
+  /// With `carve_frames` false the frames only resolve the loaded map's surface (the last
+  /// step of a sharded run, docs/scaling.md).
+  void startFrom(std::shared_ptr<const VoxelMap> earlier_map, bool carve_frames = true) {
     earlier_map_ = std::move(earlier_map);
+    carve_frames_ = carve_frames;
   }
 
  private:
@@ -70,6 +73,7 @@ class Pipeline {
   SonarModel sonar_;
   std::shared_ptr<const NoiseModel> noise_model_;  ///< the params' file, read once; or null
   std::shared_ptr<const VoxelMap> earlier_map_;    ///< startFrom's map, or null
+  bool carve_frames_ = true;
   ThreadPool& pool_;
 };
 

@@ -43,6 +43,19 @@ TEST(CliMerge, TheMapsOfTwoHalvesMergeIntoTheMapOfTheWhole) {
   const auto continued = run("continued", "--first-frame 8 --load-map " + quoted(first));
   EXPECT_EQ(test::readText(continued), test::readText(whole));
 
+  // The last step of a sharded run: the merged map's surface over every frame, without carving
+  // again, is the whole run's surface.
+  const auto surface =
+      runCli("reconstruct " + quoted(mission) + " --out " + quoted(dir.path() / "surface") +
+             " --mesh false --load-map " + quoted(merged) + " --surface-only");
+  ASSERT_EQ(surface.exit_code, 0) << surface.output;
+  EXPECT_EQ(test::readText(dir.path() / "surface" / "surface_points.ply"),
+            test::readText(dir.path() / "whole" / "surface_points.ply"));
+  const auto alone = runCli("reconstruct " + quoted(mission) + " --out " +
+                            quoted(dir.path() / "alone") + " --surface-only");
+  EXPECT_NE(alone.exit_code, 0);
+  EXPECT_NE(alone.output.find("needs --load-map"), std::string::npos) << alone.output;
+
   // A broken map is refused by name, and nothing is written.
   test::writeText(dir.path() / "cut.scmap", test::readText(first).substr(0, 100));
   const auto bad = runCli("merge " + quoted(dir.path() / "cut.scmap") + " " + quoted(second) +
