@@ -44,7 +44,7 @@ void addSourceFlags(CLI::App& cmd, SourceFlags& flags) {
   cmd.add_option("--beam-pattern", flags.beam_pattern,
                  "Elevation beam of a recording that does not say: sinc (a real array's main "
                  "lobe, the default) or clipped (nothing outside +-aperture/2, as our simulator's "
-                 "default beam)")
+                 "--beam clipped)")
       ->check(CLI::IsMember({"sinc", "clipped"}));
   cmd.add_option("--sonar-topic", flags.sonar_topic,
                  "ROS 2 bag: the sonar image topic (default: the only ProjectedSonarImage one)");

@@ -190,6 +190,16 @@ void MainWindow::buildMenus() {
                       openMission(dir);
                     }
                   });
+  // Recordings read in place (core/io/frame_source.h picks the reader by content): ROS 2 bags
+  // (a .mcap or .db3 file; a bag folder opens as a mission), ARIS and Oculus recordings.
+  file->addAction(tr("Open &recording…"), QKeySequence(tr("Ctrl+Shift+O")), this, [this] {
+    const QString recording = QFileDialog::getOpenFileName(
+        this, tr("Open a sonar recording"), QString(),
+        tr("Sonar recordings (*.mcap *.db3 *.aris *.oculus);;All files (*)"));
+    if (!recording.isEmpty()) {
+      openMission(recording);
+    }
+  });
   file->addAction(tr("&Import a sonar log…"), QKeySequence(tr("Ctrl+I")), this, [this] {
     const QString log =
         QFileDialog::getOpenFileName(this, tr("Import a sonar log"), QString(),

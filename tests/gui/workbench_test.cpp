@@ -326,6 +326,26 @@ class WorkbenchTest : public QObject {
     QCOMPARE(fs::file_size(bt), before);
   }
 
+  // File > Open recording opens a recording file in place, as the command line does: the ARIS
+  // fixture and a ROS 2 bag (one .mcap file), each with the frames and sonar it holds.
+  void recordingsOpenInPlace() {
+    MainWindow window;
+    window.show();
+    const fs::path aris = fs::path(SONARCARVE_TEST_DATA_DIR) / "aris" / "sample.aris";
+    QVERIFY(window.openMission(QString::fromStdString(aris.string())));
+    QCOMPARE(window.mission()->frames.size(), std::size_t{6});
+    QCOMPARE(window.mission()->sonar.cols(), 48);
+    QCOMPARE(window.mission()->sonar.rows(), 2000);
+    const fs::path bag = scratch_->path() / "bag";
+    const auto sim =
+        sonarcarve::test::runCli("simulate --scene riser --max-frames 3 --format mcap --out " +
+                                 sonarcarve::test::quoted(bag));
+    QVERIFY2(sim.exit_code == 0, sim.output.c_str());
+    QVERIFY(window.openMission(QString::fromStdString((bag / "mission.mcap").string())));
+    QCOMPARE(window.mission()->frames.size(), std::size_t{3});
+    QCOMPARE(window.mission()->sonar.cols(), 650);
+  }
+
   // A vendor log is imported on a worker thread, then opened like any mission.
   void oculusLogIsImportedAndOpened() {
     MainWindow window;
