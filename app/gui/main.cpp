@@ -9,6 +9,7 @@
 #include <QTimer>
 #include <iostream>
 
+#include "allocator.h"
 #include "desktop_integration.h"
 #include "frame_timeline.h"
 #include "io/session_file.h"
@@ -18,6 +19,7 @@
 #include "vtk_gl_widget.h"
 
 int main(int argc, char** argv) {
+  sonarcarve::gui::tuneAllocatorForLatency();
   sonarcarve::widgets::VtkGlWidget::setDefaultSurfaceFormat();
   QApplication app(argc, argv);
   QApplication::setApplicationName("SonarCarve");
