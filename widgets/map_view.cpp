@@ -470,8 +470,7 @@ void MapView::updateLegend() {
       break;
   }
   legend_->move(8, height() - legend_->height() - 8);
-  legend_->show();
-  legend_->raise();
+  legend_->show();  // over the GL view, made before it
 }
 
 void MapView::resizeEvent(QResizeEvent* event) {
@@ -490,7 +489,6 @@ void MapView::updateTriad() {
   }
   triad_->setAxes(axes);
   triad_->move(width() - triad_->width() - 4, height() - triad_->height() - 4);
-  triad_->raise();
   updateScaleBar();
 }
 
@@ -505,7 +503,6 @@ void MapView::updateScaleBar() {
   // Over the triad, clear of the colour key on the left.
   scale_bar_->move(width() - scale_bar_->width() - 4,
                    height() - triad_->height() - scale_bar_->height() - 8);
-  scale_bar_->raise();
 }
 
 QString MapView::pickAt(QPoint position, Eigen::Vector3d* ned) {
