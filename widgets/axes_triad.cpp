@@ -17,6 +17,11 @@ AxesTriad::AxesTriad(QWidget* parent) : QWidget(parent) {
 }
 
 void AxesTriad::setAxes(const std::array<QPointF, 3>& on_screen) {
+  // Called at every render of the 3D view: a repaint only when the axes turned (each one is a
+  // repaint of the whole window).
+  if (on_screen == axes_) {
+    return;
+  }
   axes_ = on_screen;
   update();
 }

@@ -25,6 +25,9 @@ ColourLegend::ColourLegend(QWidget* parent) : QWidget(parent) {
 
 void ColourLegend::setScale(const QString& title, double low, double high,
                             const ColourTable& colours) {
+  if (title == title_ && low == low_ && high == high_ && &colours == colours_) {
+    return;  // set at every redraw of the 3D view: no repaint for nothing
+  }
   title_ = title;
   low_ = low;
   high_ = high;

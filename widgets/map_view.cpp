@@ -4,8 +4,6 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
-#include <vtkFloatArray.h>
-#include <vtkIdTypeArray.h>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
@@ -20,7 +18,6 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "axes_triad.h"
 #include "colour_legend.h"
@@ -40,31 +37,6 @@ vtkSmartPointer<vtkActor> makeActor(vtkPolyData* poly) {
   return actor;
 }
 
-// Cells that draw each point, or consecutive points as one polyline.
-vtkSmartPointer<vtkCellArray> pointCells(vtkIdType count, bool as_line) {
-  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-  connectivity->SetNumberOfValues(count);
-  for (vtkIdType i = 0; i < count; ++i) {
-    connectivity->SetValue(i, i);
-  }
-  if (as_line) {
-    offsets->SetNumberOfValues(count > 0 ? 2 : 1);
-    offsets->SetValue(0, 0);
-    if (count > 0) {
-      offsets->SetValue(1, count);
-    }
-  } else {
-    offsets->SetNumberOfValues(count + 1);
-    for (vtkIdType i = 0; i <= count; ++i) {
-      offsets->SetValue(i, i);
-    }
-  }
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  cells->SetData(offsets, connectivity);
-  return cells;
-}
-
 vtkSmartPointer<vtkLookupTable> lookupTable(const std::array<unsigned char, 3>* colours,
                                             int count) {
   auto lut = vtkSmartPointer<vtkLookupTable>::New();
@@ -76,36 +48,19 @@ vtkSmartPointer<vtkLookupTable> lookupTable(const std::array<unsigned char, 3>* 
   return lut;
 }
 
-// Calls visit(block, k) for each point drawn: those inside `region` (all without one), every
-// stride-th of them.
-template <typename Visit>
-void forEachDrawn(const std::vector<const MapViewBlock*>& blocks, const Eigen::AlignedBox3d* region,
-                  std::size_t stride, Visit visit) {
-  std::size_t seen = 0;
-  for (const MapViewBlock* b : blocks) {
-    for (std::size_t k = 0; k < b->points.size(); ++k) {
-      if (region != nullptr && !region->contains(b->points[k].cast<double>())) {
-        continue;
-      }
-      if (seen++ % stride == 0) {
-        visit(*b, k);
-      }
-    }
+// The points an actor's polydata draws; none when it is hidden.
+std::vector<Eigen::Vector3d> drawnPointsOf(vtkActor* actor) {
+  std::vector<Eigen::Vector3d> points;
+  auto* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput());
+  if (actor->GetVisibility() == 0 || poly == nullptr) {
+    return points;
   }
-}
-
-// How many points of `blocks` lie inside `region` (all without one).
-std::size_t countInside(const std::vector<const MapViewBlock*>& blocks,
-                        const Eigen::AlignedBox3d* region) {
-  std::size_t n = 0;
-  if (region == nullptr) {
-    for (const MapViewBlock* b : blocks) {
-      n += b->points.size();
-    }
-    return n;
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
+    double p[3];
+    poly->GetPoint(i, p);
+    points.emplace_back(p[0], p[1], p[2]);
   }
-  forEachDrawn(blocks, region, 1, [&](const MapViewBlock&, std::size_t) { ++n; });
-  return n;
+  return points;
 }
 
 }  // namespace
@@ -127,6 +82,7 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
     Eigen::Vector3d ned;
     const QString text = pickAt(position, &ned);
     if (!text.isEmpty()) {
+      markPick(ned);
       emit pointPicked(text, QVector3D(static_cast<float>(ned.x()), static_cast<float>(ned.y()),
                                        static_cast<float>(ned.z())));
     }
@@ -168,6 +124,21 @@ MapView::MapView(QWidget* parent) : QWidget(parent), gl_(new VtkGlWidget(this)) 
   fan_actor_->GetProperty()->LightingOff();
   renderer->AddActor(fan_actor_);
 
+  // The picks: a marker at the last, a line from the one before; magenta, which neither colour
+  // table uses.
+  pick_marker_actor_ = makeActor(vtkSmartPointer<vtkPolyData>::New());
+  pick_marker_actor_->GetProperty()->SetColor(1.0, 0.2, 0.85);
+  pick_marker_actor_->GetProperty()->SetPointSize(12.0f);
+  pick_marker_actor_->GetProperty()->RenderPointsAsSpheresOn();
+  pick_marker_actor_->GetProperty()->LightingOff();
+  renderer->AddActor(pick_marker_actor_);
+  pick_line_actor_ = makeActor(vtkSmartPointer<vtkPolyData>::New());
+  pick_line_actor_->GetProperty()->SetColor(1.0, 0.2, 0.85);
+  pick_line_actor_->GetProperty()->SetLineWidth(3.0f);
+  pick_line_actor_->GetProperty()->LightingOff();
+  renderer->AddActor(pick_line_actor_);
+  updatePickMarks();
+
   mesh_layer_.poly = vtkSmartPointer<vtkPolyData>::New();
   mesh_layer_.actor = makeActor(mesh_layer_.poly);
   renderer->AddActor(mesh_layer_.actor);
@@ -195,19 +166,67 @@ QString MapView::caption() const {
 }
 
 void MapView::clearMap() {
-  blocks_.clear();
+  const MapBlocks freed_here = takeMap();
+}
+
+MapView::MapBlocks MapView::takeMap() {
+  MapBlocks taken;
+  taken.swap(blocks_);
   latest_frames_done_ = 0;
   surface_ = MapViewBlock{};
   has_errors_ = false;
   first_points_ = true;
-  setMesh(Mesh{});
+  mesh_ = MeshData{};
+  fillMesh();
   setLayer(Layer::Map);
   redraw();
+  return taken;
 }
 
 void MapView::setSurface(MapViewBlock surface) {
   surface_ = std::move(surface);
-  fill(surface_layer_, {&surface_}, std::numeric_limits<std::size_t>::max());
+  has_errors_ = has_errors_ || !surface_.errors_m.empty();
+  fillSurface();
+  render();
+}
+
+MapView::PreparedResult MapView::prepareResult(MapViewBlock surface, MeshData mesh, ColourBy by,
+                                               const ViewClip& clip) {
+  PreparedResult prepared;
+  prepared.colour_by = by;
+  if (clip.active()) {
+    prepared.region = clip.region();
+  }
+  const Eigen::AlignedBox3d* region = prepared.region ? &*prepared.region : nullptr;
+  // As shownColouring(): error colouring only with errors to show.
+  const bool errors = !surface.errors_m.empty() || !mesh.vertices.errors_m.empty();
+  const ColourBy shown = by == ColourBy::Error && !errors ? ColourBy::Intensity : by;
+  prepared.surface_layer = preparePoints({&surface}, region, 1, shown);
+  prepared.mesh_layer = prepareMesh(mesh, region, shown);
+  prepared.surface = std::move(surface);
+  prepared.mesh = std::move(mesh);
+  return prepared;
+}
+
+void MapView::setResult(PreparedResult result) {
+  surface_ = std::move(result.surface);
+  mesh_ = std::move(result.mesh);
+  mesh_.vertices.values.resize(mesh_.vertices.points.size(), 0.0f);
+  has_errors_ = has_errors_ || !surface_.errors_m.empty() || !mesh_.vertices.errors_m.empty();
+  const Eigen::AlignedBox3d* region = clipRegion();
+  const bool same_region =
+      (region == nullptr && !result.region) ||
+      (region != nullptr && result.region && region->min() == result.region->min() &&
+       region->max() == result.region->max());
+  if (same_region && result.colour_by == colour_by_ &&
+      result.surface_layer.colours.by == shownColouring()) {
+    adopt(surface_layer_, std::move(result.surface_layer));
+    adopt(mesh_layer_, std::move(result.mesh_layer));
+  } else {
+    // The user changed the colouring or the clip while the run ended.
+    fillSurface();
+    fillMesh();
+  }
   render();
 }
 
@@ -295,8 +314,7 @@ void MapView::fillMap() {
     (provisional(*b) ? changing : settled).push_back(b);
     total += countInside({b}, clipRegion());
   }
-  const std::size_t stride =
-      total <= kMaxDrawnMapPoints ? 1 : (total + kMaxDrawnMapPoints - 1) / kMaxDrawnMapPoints;
+  const std::size_t stride = strideFor(total, kMaxDrawnMapPoints);
   fillWithStride(map_layer_, settled, stride);
   fillWithStride(provisional_layer_, changing, stride);
   // One colour scale for both.
@@ -321,66 +339,42 @@ void MapView::redraw() {
   emit redrawn(mapPointCount());
 }
 
-void MapView::fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
-                   std::size_t max_points) {
-  const std::size_t total = countInside(blocks, clipRegion());
-  fillWithStride(layer, blocks, total <= max_points ? 1 : (total + max_points - 1) / max_points);
-}
-
 void MapView::fillWithStride(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
                              std::size_t stride) {
-  const std::size_t total = countInside(blocks, clipRegion());
-  layer.stride = stride;
-  const auto n = static_cast<vtkIdType>((total + layer.stride - 1) / layer.stride);
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(n);
-  auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
-  forEachDrawn(blocks, clipRegion(), layer.stride, [&](const MapViewBlock& b, std::size_t k) {
-    const Eigen::Vector3f& p = b.points[k];
-    xyz[0] = p.x();
-    xyz[1] = p.y();
-    xyz[2] = p.z();
-    xyz += 3;
-  });
-  layer.poly->SetPoints(points);
-  layer.poly->SetVerts(pointCells(n, false));
-  colour(layer, blocks, layer.stride, clipRegion());
+  adopt(layer, preparePoints(blocks, clipRegion(), stride, shownColouring()));
+}
+
+void MapView::fillSurface() {
+  fillWithStride(surface_layer_, {&surface_}, 1);
+  result_layers_built_here_ += surface_.points.empty() ? 0 : 1;
 }
 
 void MapView::fillMesh() {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh_block_.points.size()));
-  for (std::size_t i = 0; i < mesh_block_.points.size(); ++i) {
-    const Eigen::Vector3f& v = mesh_block_.points[i];
-    points->SetPoint(static_cast<vtkIdType>(i), v.x(), v.y(), v.z());
-  }
-  // A triangle is drawn when its centre lies in the clip.
-  const Eigen::AlignedBox3d* region = clipRegion();
-  auto triangles = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& t : mesh_triangles_) {
-    const Eigen::Vector3f centre =
-        (mesh_block_.points[t[0]] + mesh_block_.points[t[1]] + mesh_block_.points[t[2]]) / 3.0f;
-    if (region == nullptr || region->contains(centre.cast<double>())) {
-      const vtkIdType ids[3] = {t[0], t[1], t[2]};
-      triangles->InsertNextCell(3, ids);
-    }
-  }
-  mesh_layer_.poly->Initialize();  // drops the previous mesh's points, cells and values
-  mesh_layer_.poly->SetPoints(points);
-  mesh_layer_.poly->SetPolys(triangles);
-  mesh_layer_.stride = 1;
-  if (mesh_normals_.size() == mesh_block_.points.size()) {
-    auto normals = vtkSmartPointer<vtkFloatArray>::New();
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh_normals_.size()));
-    for (std::size_t i = 0; i < mesh_normals_.size(); ++i) {
-      normals->SetTypedTuple(static_cast<vtkIdType>(i), mesh_normals_[i].data());
-    }
-    mesh_layer_.poly->GetPointData()->SetNormals(normals);
-  }
-  colour(mesh_layer_, {&mesh_block_}, 1, nullptr);  // the clip drops triangles, not vertices
+  adopt(mesh_layer_, prepareMesh(mesh_, clipRegion(), shownColouring()));
+  result_layers_built_here_ += mesh_.triangles.empty() ? 0 : 1;
+}
+
+void MapView::adopt(PointLayer& layer, PreparedLayer prepared) {
+  layer.poly = std::move(prepared.poly);
+  layer.stride = prepared.stride;
+  vtkPolyDataMapper::SafeDownCast(layer.actor->GetMapper())->SetInputData(layer.poly);
+  applyColours(layer, std::move(prepared.colours));
+}
+
+void MapView::applyColours(PointLayer& layer, LayerColours colours) {
+  layer.poly->GetPointData()->SetScalars(colours.scalars);
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(layer.actor->GetMapper());
+  const auto& table = colours.by == ColourBy::Error ? errorColours() : viridisColours();
+  mapper->SetLookupTable(lookupTable(table.data(), static_cast<int>(table.size())));
+  mapper->SetScalarRange(colours.low, colours.high);
+  mapper->ScalarVisibilityOn();
+  layer.coloured_by = colours.by;
+  layer.low = colours.low;
+  layer.high = colours.high;
+}
+
+MapView::ColourBy MapView::shownColouring() const {
+  return colour_by_ == ColourBy::Error && !has_errors_ ? ColourBy::Intensity : colour_by_;
 }
 
 const Eigen::AlignedBox3d* MapView::clipRegion() const {
@@ -391,7 +385,7 @@ void MapView::setClip(const ViewClip& clip) {
   clip_ = clip;
   clip_region_ = clip.region();
   fillMap();
-  fill(surface_layer_, {&surface_}, std::numeric_limits<std::size_t>::max());
+  fillSurface();
   fillMesh();
   render();
 }
@@ -439,7 +433,7 @@ Eigen::AlignedBox3d MapView::dataBounds() const {
       bounds.extend(p.cast<double>());
     }
   }
-  for (const MapViewBlock* b : {&surface_, &mesh_block_}) {
+  for (const MapViewBlock* b : {&surface_, &mesh_.vertices}) {
     for (const auto& p : b->points) {
       bounds.extend(p.cast<double>());
     }
@@ -449,49 +443,9 @@ Eigen::AlignedBox3d MapView::dataBounds() const {
 
 void MapView::recolour() {
   fillMap();
-  colour(surface_layer_, {&surface_}, surface_layer_.stride, clipRegion());
-  colour(mesh_layer_, {&mesh_block_}, 1, nullptr);
-}
-
-void MapView::colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
-                     std::size_t stride, const Eigen::AlignedBox3d* region) {
-  auto scalars = vtkSmartPointer<vtkFloatArray>::New();
-  scalars->SetNumberOfValues(layer.poly->GetNumberOfPoints());
-  const ColourBy by =
-      colour_by_ == ColourBy::Error && !has_errors_ ? ColourBy::Intensity : colour_by_;
-  vtkIdType i = 0;
-  std::vector<float> intensities;
-  forEachDrawn(blocks, region, stride, [&](const MapViewBlock& b, std::size_t k) {
-    float v = k < b.values.size() ? b.values[k] : 0.0f;
-    if (by == ColourBy::Depth) {
-      v = b.points[k].z();
-    } else if (by == ColourBy::Error) {
-      v = k < b.errors_m.size() ? b.errors_m[k] : 0.0f;
-    } else {
-      intensities.push_back(v);
-    }
-    scalars->SetValue(i++, v);
-  });
-  double range[2] = {0.0, 1.0};
-  if (by == ColourBy::Error) {
-    range[1] = 0.10;  // the evaluation's "floating point" distance
-  } else if (by == ColourBy::Intensity && !intensities.empty()) {
-    const auto hi = intensities.begin() +
-                    static_cast<std::ptrdiff_t>(0.98 * static_cast<double>(intensities.size() - 1));
-    std::nth_element(intensities.begin(), hi, intensities.end());
-    range[1] = std::max(1.0, static_cast<double>(*hi));
-  } else if (layer.poly->GetNumberOfPoints() > 0) {
-    scalars->GetRange(range);
-  }
-  layer.poly->GetPointData()->SetScalars(scalars);
-  auto* mapper = vtkPolyDataMapper::SafeDownCast(layer.actor->GetMapper());
-  const auto& colours = by == ColourBy::Error ? errorColours() : viridisColours();
-  mapper->SetLookupTable(lookupTable(colours.data(), static_cast<int>(colours.size())));
-  mapper->SetScalarRange(range[0], std::max(range[1], range[0] + 1e-6));
-  mapper->ScalarVisibilityOn();
-  layer.coloured_by = by;
-  layer.low = range[0];
-  layer.high = std::max(range[1], range[0] + 1e-6);
+  applyColours(surface_layer_,
+               layerColours({&surface_}, clipRegion(), surface_layer_.stride, shownColouring()));
+  applyColours(mesh_layer_, layerColours({&mesh_.vertices}, nullptr, 1, shownColouring()));
 }
 
 void MapView::updateLegend() {
@@ -513,8 +467,7 @@ void MapView::updateLegend() {
       break;
   }
   legend_->move(8, height() - legend_->height() - 8);
-  legend_->show();
-  legend_->raise();
+  legend_->show();  // over the GL view, made before it
 }
 
 void MapView::resizeEvent(QResizeEvent* event) {
@@ -533,7 +486,6 @@ void MapView::updateTriad() {
   }
   triad_->setAxes(axes);
   triad_->move(width() - triad_->width() - 4, height() - triad_->height() - 4);
-  triad_->raise();
   updateScaleBar();
 }
 
@@ -548,7 +500,6 @@ void MapView::updateScaleBar() {
   // Over the triad, clear of the colour key on the left.
   scale_bar_->move(width() - scale_bar_->width() - 4,
                    height() - triad_->height() - scale_bar_->height() - 8);
-  scale_bar_->raise();
 }
 
 QString MapView::pickAt(QPoint position, Eigen::Vector3d* ned) {
@@ -592,6 +543,53 @@ QString MapView::pickAt(QPoint position, Eigen::Vector3d* ned) {
       .arg(p[1], 0, 'f', 2)
       .arg(p[2], 0, 'f', 2)
       .arg(what);
+}
+
+void MapView::markPick(const Eigen::Vector3d& ned) {
+  picks_.push_back(ned);
+  if (picks_.size() > 2) {
+    picks_.erase(picks_.begin());
+  }
+  updatePickMarks();
+  render();
+}
+
+void MapView::clearPicks() {
+  picks_.clear();
+  updatePickMarks();
+  render();
+}
+
+void MapView::updatePickMarks() {
+  const auto polyline = [](const std::vector<Eigen::Vector3d>& at) {
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    for (const Eigen::Vector3d& p : at) {
+      points->InsertNextPoint(p.data());
+    }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    const auto n = static_cast<vtkIdType>(at.size());
+    if (n == 1) {
+      poly->SetVerts(pointCells(n, false));
+    } else if (n > 1) {
+      poly->SetLines(pointCells(n, true));
+    }
+    return poly;
+  };
+  const std::vector<Eigen::Vector3d> last(picks_.empty() ? picks_.end() : picks_.end() - 1,
+                                          picks_.end());
+  vtkPolyDataMapper::SafeDownCast(pick_marker_actor_->GetMapper())->SetInputData(polyline(last));
+  pick_marker_actor_->SetVisibility(!picks_.empty());
+  vtkPolyDataMapper::SafeDownCast(pick_line_actor_->GetMapper())->SetInputData(polyline(picks_));
+  pick_line_actor_->SetVisibility(picks_.size() == 2);
+}
+
+std::vector<Eigen::Vector3d> MapView::pickMarkerPoints() const {
+  return drawnPointsOf(pick_marker_actor_);
+}
+
+std::vector<Eigen::Vector3d> MapView::pickLinePoints() const {
+  return drawnPointsOf(pick_line_actor_);
 }
 
 QPoint MapView::screenPositionOf(const Eigen::Vector3d& ned) const {
@@ -737,11 +735,8 @@ void MapView::setCurrentFrame(const Eigen::Isometry3d& T_world_sonar, const Sona
 }
 
 void MapView::setMesh(const Mesh& mesh, std::vector<float> vertex_errors_m) {
-  mesh_block_ = MapViewBlock{0, mesh.vertices, mesh.intensity, std::move(vertex_errors_m)};
-  mesh_block_.values.resize(mesh.vertices.size(), 0.0f);
-  has_errors_ = has_errors_ || !mesh_block_.errors_m.empty();
-  mesh_triangles_ = mesh.triangles;
-  mesh_normals_ = mesh.normals;
+  mesh_ = meshData(mesh, std::move(vertex_errors_m));
+  has_errors_ = has_errors_ || !mesh_.vertices.errors_m.empty();
   fillMesh();
   render();
 }

@@ -15,10 +15,12 @@
 #include <array>
 #include <map>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "io/camera_state.h"
+#include "map_layers.h"
 #include "mesh/surface_mesher.h"
 #include "sonar/sonar_model.h"
 #include "view_clip.h"
@@ -34,22 +36,13 @@ class ColourLegend;
 class ScaleBar;
 class VtkGlWidget;
 
-/// One block of the map as the viewer receives it (a block with no points has become empty).
-struct MapViewBlock {
-  std::size_t block = 0;
-  std::vector<Eigen::Vector3f> points;  ///< voxel centres, world NED
-  std::vector<float> values;            ///< carved intensities
-  std::vector<float> errors_m;          ///< distance to the ground truth, or empty
-  std::size_t frames_done = 0;          ///< frames carved when the block last changed
-};
-
 /// Where the camera is, to save and restore a view (io/camera_state.h).
 using CameraState = sonarcarve::CameraState;
 
 class MapView : public QWidget {
   Q_OBJECT
  public:
-  enum class ColourBy { Intensity, Depth, Error };
+  using ColourBy = widgets::ColourBy;
   enum class Layer { Map, Surface, Mesh };
   /// "intensity", "depth", "error": the names sessions and the command line use.
   static const char* nameOf(ColourBy by);
@@ -68,6 +61,11 @@ class MapView : public QWidget {
   ~MapView() override;
 
   void clearMap();
+  /// The view's copy of the carved map's blocks, by block number.
+  using MapBlocks = std::map<std::size_t, MapViewBlock>;
+  /// As clearMap(), giving the blocks it held to the caller, who can have a worker free them
+  /// (a riser's took the GUI thread 130 ms and more).
+  [[nodiscard]] MapBlocks takeMap();
   /// Whether a run is carving the map: only then are its recently changed blocks provisional.
   void setLive(bool live);
   /// Points of the carved map drawn as provisional (translucent), as settled (opaque).
@@ -81,6 +79,26 @@ class MapView : public QWidget {
   std::vector<Eigen::Vector3f> mapPoints() const;
   /// The run's surface points (and their errors against the truth, if known).
   void setSurface(MapViewBlock surface);
+
+  /// A run's surface and mesh with their layers built for a colouring and a clip region, on
+  /// any thread (prepareResult touches no widget); setResult() then only hands them to VTK.
+  struct PreparedResult {
+    MapViewBlock surface;
+    MeshData mesh;
+    ColourBy colour_by = ColourBy::Intensity;   ///< as asked (before falling back)
+    std::optional<Eigen::AlignedBox3d> region;  ///< the clip region built for
+    PreparedLayer surface_layer;
+    PreparedLayer mesh_layer;
+  };
+  static PreparedResult prepareResult(MapViewBlock surface, MeshData mesh, ColourBy by,
+                                      const ViewClip& clip);
+  /// Shows a prepared result as setSurface() and setMesh() would; its layers are rebuilt here
+  /// only if the colouring or the clip has changed since it was prepared.
+  void setResult(PreparedResult result);
+  /// How many times the surface's or the mesh's layer (not empty) was built by the view, on
+  /// the GUI thread, for tests: setResult() of a result prepared for the view's colouring and
+  /// clip builds none.
+  std::size_t resultLayersBuiltHere() const { return result_layers_built_here_; }
   void setLayer(Layer layer);
   Layer layer() const { return layer_; }
   /// A line over the view's top-left corner saying what the map is (provisional while carving,
@@ -94,6 +112,15 @@ class MapView : public QWidget {
   /// "N 4.31 E -0.05 D 10.12 m, intensity 2345 counts", its world position in `ned`. Empty if
   /// there is none (or the mesh is shown).
   QString pickAt(QPoint position, Eigen::Vector3d* ned = nullptr);
+  /// The picks marked in the view, oldest first: at most the last two (those of a distance).
+  /// A click that picks a point marks it; the last has a marker, a line joins the two.
+  void markPick(const Eigen::Vector3d& ned);
+  void clearPicks();
+  const std::vector<Eigen::Vector3d>& picks() const { return picks_; }
+  /// What the pick marks draw (for tests): the marker's points and the distance line's points,
+  /// 0 for one that is hidden.
+  std::vector<Eigen::Vector3d> pickMarkerPoints() const;
+  std::vector<Eigen::Vector3d> pickLinePoints() const;
   /// Where a world point appears in the widget.
   QPoint screenPositionOf(const Eigen::Vector3d& ned) const;
   /// The north, east and down axes on the screen as the triad in the corner draws them.
@@ -154,28 +181,29 @@ class MapView : public QWidget {
   void resizeEvent(QResizeEvent* event) override;
   void redraw();
   void recolour();
-  void fill(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
-            std::size_t max_points);
   void fillWithStride(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
                       std::size_t stride);
   void fillMap();
+  void fillSurface();
   void fillMesh();
+  /// The colouring drawn for `colour_by_` (error only when errors are known).
+  ColourBy shownColouring() const;
+  void adopt(PointLayer& layer, PreparedLayer prepared);
+  void applyColours(PointLayer& layer, LayerColours colours);
   const PointLayer* shownLayer() const;
   const Eigen::AlignedBox3d* clipRegion() const;
-  // Colours the points of `blocks` inside `region` (all without one), every stride-th.
-  void colour(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks, std::size_t stride,
-              const Eigen::AlignedBox3d* region);
   std::vector<const MapViewBlock*> mapBlocks() const;
   bool provisional(const MapViewBlock& block) const;
   void scheduleRedraw();
   void render();
+  void updatePickMarks();
 
   VtkGlWidget* gl_ = nullptr;
   QLabel* caption_ = nullptr;
   ColourLegend* legend_ = nullptr;
   AxesTriad* triad_ = nullptr;
   ScaleBar* scale_bar_ = nullptr;
-  std::map<std::size_t, MapViewBlock> blocks_;
+  MapBlocks blocks_;
   MapViewBlock surface_;
   Layer layer_ = Layer::Map;
   ColourBy colour_by_ = ColourBy::Intensity;
@@ -188,14 +216,16 @@ class MapView : public QWidget {
   std::size_t latest_frames_done_ = 0;
   PointLayer surface_layer_;
   PointLayer mesh_layer_;
-  MapViewBlock mesh_block_;  // the mesh's vertices with their values, to colour it
-  std::vector<std::array<std::uint32_t, 3>> mesh_triangles_;
-  std::vector<Eigen::Vector3f> mesh_normals_;
+  MeshData mesh_;  // its vertices with their values, to colour it
+  std::size_t result_layers_built_here_ = 0;
   ViewClip clip_;
   Eigen::AlignedBox3d clip_region_;
   vtkSmartPointer<vtkActor> track_actor_;
   vtkSmartPointer<vtkActor> frustum_actor_;
   vtkSmartPointer<vtkActor> fan_actor_;
+  std::vector<Eigen::Vector3d> picks_;
+  vtkSmartPointer<vtkActor> pick_marker_actor_;
+  vtkSmartPointer<vtkActor> pick_line_actor_;
 };
 
 }  // namespace sonarcarve::widgets

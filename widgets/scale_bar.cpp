@@ -32,6 +32,9 @@ double ScaleBar::roundLength(double metres) {
 }
 
 void ScaleBar::setMetresPerPixel(double metres) {
+  if (metres == metres_per_pixel_) {
+    return;  // called at every render of the 3D view: no repaint for nothing
+  }
   metres_per_pixel_ = metres;
   length_m_ = roundLength(metres * kMaxBarPixels);
   setVisible(length_m_ > 0.0);

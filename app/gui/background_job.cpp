@@ -112,7 +112,13 @@ int BackgroundJob::startJob(std::function<Deliver(JobContext&)> run, ErrorHandle
     } catch (...) {
       outcome = [failed] { failed({QStringLiteral("unknown error"), false}); };
     }
-    post(state->id, std::move(outcome), true);
+    if (state->dropped) {
+      // Superseded: nothing of it arrives, and what its outcome holds (a cancelled run's map)
+      // is freed here rather than on the GUI thread.
+      outcome = nullptr;
+    } else {
+      post(state->id, std::move(outcome), true);
+    }
     state->finished = true;
   });
   threads_.push_back({state, std::move(worker)});

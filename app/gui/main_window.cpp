@@ -68,6 +68,18 @@ QString paramsKey(const std::filesystem::path& folder) {
          QString::fromStdString(folder.string()).toUtf8().toBase64(QByteArray::Base64UrlEncoding);
 }
 
+// QProgressBar::setValue() repaints at once when its text changes, and with the 3D view in
+// the window a repaint composes the whole window through OpenGL: 40 to 70 ms with software
+// OpenGL under load, at every progress report. With its updates held, the bar is repainted
+// with the rest of the window at the next update instead.
+void showProgress(QProgressBar& bar, int maximum, int value, const QString& format) {
+  bar.setUpdatesEnabled(false);
+  bar.setMaximum(maximum);
+  bar.setValue(value);
+  bar.setFormat(format);
+  bar.setUpdatesEnabled(true);  // schedules an update
+}
+
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -383,9 +395,8 @@ void MainWindow::wireRunner() {
           [this](int, const QString& stage, qulonglong done, qulonglong total) {
             // A stage that reports no steps (the mesh: 0 of 1 until it ends) shows as busy.
             const bool busy = total <= 1 && done == 0;
-            progress_bar_->setMaximum(busy ? 0 : static_cast<int>(total));
-            progress_bar_->setValue(static_cast<int>(done));
-            progress_bar_->setFormat(stage + " %v/%m");
+            showProgress(*progress_bar_, busy ? 0 : static_cast<int>(total), static_cast<int>(done),
+                         stage + " %v/%m");
             QString text =
                 busy ? tr("%1…").arg(stage) : tr("%1: %2 of %3").arg(stage).arg(done).arg(total);
             if (stage == "carve") {
@@ -414,57 +425,50 @@ void MainWindow::wireRunner() {
           [this](int, qulonglong index) { latest_carved_frame_ = static_cast<long>(index); });
   connect(runner_.get(), &ReconstructionRunner::frameSkipped, this,
           [this](int, const QString& message) { log(tr("skipped: %1").arg(message)); });
-  connect(
-      runner_.get(), &ReconstructionRunner::finished, this,
-      [this](int, std::shared_ptr<const ReconstructionResult> result,
-             const std::vector<float>& surface_errors_m, const std::vector<float>& mesh_errors_m) {
-        result_ = result;
-        follow_timer_.stop();
-        map_view_->setCaption({});
-        map_view_->setLive(false);
-        map_view_->flush();
-        map_view_->setMesh(result->mesh, mesh_errors_m);
-        widgets::MapViewBlock surface;
-        surface.points = positionsOf(result->surface);
-        for (const SurfacePoint& p : result->surface) {
-          surface.values.push_back(p.intensity);
-        }
-        surface.errors_m = surface_errors_m;
-        map_view_->setSurface(std::move(surface));
-        if (!result->surface.empty()) {
-          layer_->setCurrentIndex(preferred_layer_);  // the surface, or the user's choice
-          if (!view_settled_) {
-            map_view_->fitCamera();
-          }
-        }
-        view_settled_ = true;
-        progress_bar_->setFormat(tr("done"));
-        const QString summary =
-            tr("done: %1 frames, %2 occupied voxels, %3 surface points, %4 mesh triangles, "
-               "%5 s (carving %6 ms/frame)")
-                .arg(result->frames_used)
-                .arg(result->occupied_voxels)
-                .arg(result->surface.size())
-                .arg(result->mesh.triangles.size())
-                .arg(result->total_s, 0, 'f', 1)
-                .arg(result->carve_ms_median, 0, 'f', 1);
-        log(tr("denoising: %1, %2")
-                .arg(QString::fromStdString(result->detector),
-                     QString::fromStdString(result->denoising)));
-        if (result->keep_level.frames > 0) {
-          log(tr("beam-aware carving: voxels kept above %1 counts on the beam's axis (%2 dB "
-                 "below the bright returns, %3)")
-                  .arg(result->keep_level.level, 0, 'f', 1)
-                  .arg(run_params_.carve.dynamic_range_db, 0, 'f', 1)
-                  .arg(result->keep_level.bright_returns, 0, 'f', 0));
-        }
-        log(summary);
-        progress_label_->setText(summary);
-        updateRunActions();
-        recordRun(*result);
-        measureAccuracy(*result);
-        emit runFinished(result);
-      });
+  connect(runner_.get(), &ReconstructionRunner::finished, this,
+          [this](int, std::shared_ptr<const ReconstructionResult> result,
+                 std::shared_ptr<widgets::MapView::PreparedResult> view,
+                 std::shared_ptr<const std::vector<Eigen::Vector3f>> surface_points) {
+            result_ = result;
+            follow_timer_.stop();
+            map_view_->setCaption({});
+            map_view_->setLive(false);
+            map_view_->flush();
+            map_view_->setResult(std::move(*view));  // built on the worker
+            if (!result->surface.empty()) {
+              layer_->setCurrentIndex(preferred_layer_);  // the surface, or the user's choice
+              if (!view_settled_) {
+                map_view_->fitCamera();
+              }
+            }
+            view_settled_ = true;
+            progress_bar_->setFormat(tr("done"));
+            const QString summary =
+                tr("done: %1 frames, %2 occupied voxels, %3 surface points, %4 mesh triangles, "
+                   "%5 s (carving %6 ms/frame)")
+                    .arg(result->frames_used)
+                    .arg(result->occupied_voxels)
+                    .arg(result->surface.size())
+                    .arg(result->mesh.triangles.size())
+                    .arg(result->total_s, 0, 'f', 1)
+                    .arg(result->carve_ms_median, 0, 'f', 1);
+            log(tr("denoising: %1, %2")
+                    .arg(QString::fromStdString(result->detector),
+                         QString::fromStdString(result->denoising)));
+            if (result->keep_level.frames > 0) {
+              log(tr("beam-aware carving: voxels kept above %1 counts on the beam's axis (%2 dB "
+                     "below the bright returns, %3)")
+                      .arg(result->keep_level.level, 0, 'f', 1)
+                      .arg(run_params_.carve.dynamic_range_db, 0, 'f', 1)
+                      .arg(result->keep_level.bright_returns, 0, 'f', 0));
+            }
+            log(summary);
+            progress_label_->setText(summary);
+            updateRunActions();
+            recordRun(*result);
+            measureAccuracy(std::move(surface_points));
+            emit runFinished(result);
+          });
   connect(runner_.get(), &ReconstructionRunner::failed, this, [this](int, const QString& message) {
     follow_timer_.stop();
     map_view_->setLive(false);
@@ -556,10 +560,11 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   mission_ = mission;
   view_settled_ = false;
   last_pick_.reset();
+  map_view_->clearPicks();
   if (another && own_params) {
     takeMissionParams();
   }
-  result_.reset();
+  releaseRun(map_view_->takeMap());
   truth_.reset();
   truth_mesh_.reset();
   runs_.clear();
@@ -745,13 +750,13 @@ void MainWindow::startRun() {
   QSettings().setValue(paramsKey(mission_->folder), QString::fromStdString(params.toYaml()));
   // A re-run keeps the user's camera and frame; the map being carved shows until it ends.
   const CameraState camera = map_view_->cameraState();
-  map_view_->clearMap();
+  widgets::MapView::MapBlocks shown_map = map_view_->takeMap();
   map_view_->setLive(true);
   if (view_settled_) {
     map_view_->setCameraState(camera);
   }
   layer_->setCurrentIndex(0);
-  result_.reset();
+  releaseRun(std::move(shown_map));
   accuracy_job_.discard();  // of the run superseded
   if (truth_mesh_) {
     accuracy_panel_->showPending();
@@ -762,14 +767,14 @@ void MainWindow::startRun() {
     const QSignalBlocker block(pause_action_);
     pause_action_->setChecked(false);
   }
-  runner_->start({mission_, params, truth_});
+  runner_->start({mission_, params, truth_, map_view_->colourBy(), map_view_->clip()});
   map_view_->setCaption(
       tr("Carving: provisional; translucent voxels are still in view and may yet be carved "
          "away (ghosts in the beam's tails go as more views arrive)"));
   if (!view_settled_) {
     follow_timer_.start();  // the frame view follows the carving on a mission's first run
   }
-  progress_bar_->setValue(0);
+  showProgress(*progress_bar_, progress_bar_->maximum(), 0, progress_bar_->format());
   progress_label_->setText(tr("carving…"));
   updateRunActions();
 }
@@ -1120,8 +1125,8 @@ void MainWindow::recordRun(const ReconstructionResult& result) {
   history_panel_->setRuns(runs_);
 }
 
-void MainWindow::measureAccuracy(const ReconstructionResult& result) {
-  if (!truth_mesh_ || result.surface.empty()) {
+void MainWindow::measureAccuracy(std::shared_ptr<const std::vector<Eigen::Vector3f>> points) {
+  if (!truth_mesh_ || points->empty()) {
     accuracy_panel_->showNoGroundTruth();
     return;
   }
@@ -1130,15 +1135,14 @@ void MainWindow::measureAccuracy(const ReconstructionResult& result) {
   const std::size_t run = runs_.size() - 1;
   accuracy_job_.start(
       // The points, not the result: the worker must not keep the run's map alive.
-      [this, truth = truth_mesh_, folder = mission_->folder,
-       points = positionsOf(result.surface)](JobContext&) {
+      [this, truth = truth_mesh_, folder = mission_->folder, points](JobContext&) {
         std::error_code ec;
         const auto visible_file = folder / "visible_points.ply";
         std::vector<Eigen::Vector3f> visible;
         if (std::filesystem::exists(visible_file, ec)) {
           visible = readPointsPly(visible_file);
         }
-        return evaluate(points, *truth, std::move(visible), pool_);
+        return evaluate(*points, *truth, std::move(visible), pool_);
       },
       [this, run](const EvaluationResult& evaluation) {
         accuracy_panel_->showResult(evaluation);
@@ -1159,6 +1163,21 @@ void MainWindow::measureAccuracy(const ReconstructionResult& result) {
         accuracy_panel_->showNoGroundTruth();
         log(tr("accuracy not measured: %1").arg(error.message));
       });
+}
+
+void MainWindow::releaseRun(widgets::MapView::MapBlocks shown_map) {
+  // The run's map (the carver's blocks) and the 3D view's copy of its occupied voxels: freeing
+  // them at a re-run's start took the GUI thread 130 to 200 ms on the riser demo (perf: glibc
+  // merging its free lists; see allocator.h). A worker frees them (the result only if nothing
+  // else holds it).
+  release_job_.start(
+      [result = std::move(result_), map = std::move(shown_map)](JobContext&) mutable {
+        result.reset();
+        map.clear();
+        return 0;
+      },
+      [](int) {}, [](const JobError&) {});
+  result_.reset();
 }
 
 void MainWindow::goBackToRun(int index) {

@@ -150,7 +150,9 @@ class MainWindow : public QMainWindow {
   void fillRecentMenu();
   void updateRunActions();
   void recordRun(const ReconstructionResult& result);
-  void measureAccuracy(const ReconstructionResult& result);
+  void measureAccuracy(std::shared_ptr<const std::vector<Eigen::Vector3f>> points);
+  /// Lets go of the last run's result and of the 3D view's copy of its map; a worker frees them.
+  void releaseRun(widgets::MapView::MapBlocks shown_map);
   Session currentSession() const;
 
   ThreadPool pool_;  // the workbench's one pool; it outlives the jobs that use it
@@ -200,6 +202,7 @@ class MainWindow : public QMainWindow {
   BackgroundJob import_job_;
   BackgroundJob learn_job_;
   BackgroundJob accuracy_job_;
+  BackgroundJob release_job_;
   QPointer<QProgressDialog> import_dialog_;
 };
 

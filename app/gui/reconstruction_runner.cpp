@@ -92,8 +92,8 @@ ReconstructionRunner::ReconstructionRunner(ThreadPool& pool, QObject* parent)
 int ReconstructionRunner::start(RunRequest request) {
   struct Outcome {
     std::shared_ptr<const ReconstructionResult> result;
-    std::vector<float> surface_errors_m;
-    std::vector<float> mesh_errors_m;
+    std::shared_ptr<widgets::MapView::PreparedResult> view;
+    std::shared_ptr<const std::vector<Eigen::Vector3f>> surface_points;
   };
   // Runs on the GUI thread, for the current job only (BackgroundJob drops superseded ones).
   const auto current = [this] { return job_.currentJob(); };
@@ -118,15 +118,26 @@ int ReconstructionRunner::start(RunRequest request) {
         auto result = std::make_shared<const ReconstructionResult>(
             Pipeline(*request.mission, request.params, pool_)
                 .run(progress, &observer, kMapUpdateFrames));
-        Outcome outcome{result, {}, {}};
+        auto points =
+            std::make_shared<const std::vector<Eigen::Vector3f>>(positionsOf(result->surface));
+        std::vector<float> surface_errors_m;
+        std::vector<float> mesh_errors_m;
         if (request.truth && !result->cancelled) {
-          outcome.surface_errors_m = request.truth->distances(positionsOf(result->surface));
-          outcome.mesh_errors_m = request.truth->distances(result->mesh.vertices);
+          surface_errors_m = request.truth->distances(*points);
+          mesh_errors_m = request.truth->distances(result->mesh.vertices);
         }
-        return outcome;
+        // Built on the GUI thread, the end-of-run handler that made the view's layers of the
+        // riser demo's surface and mesh blocked it 0.5 to 0.8 s under load (docs/benchmarks.md):
+        // built here, the GUI thread only shows them.
+        auto view =
+            std::make_shared<widgets::MapView::PreparedResult>(widgets::MapView::prepareResult(
+                widgets::surfaceBlock(result->surface, std::move(surface_errors_m)),
+                widgets::meshData(result->mesh, std::move(mesh_errors_m)), request.colour_by,
+                request.clip));
+        return Outcome{result, std::move(view), std::move(points)};
       },
       [this, current](Outcome outcome) {
-        emit finished(current(), outcome.result, outcome.surface_errors_m, outcome.mesh_errors_m);
+        emit finished(current(), outcome.result, outcome.view, outcome.surface_points);
       },
       [this, current](const JobError& error) { emit failed(current(), error.message); },
       [this, current](const QString& stage, std::size_t done, std::size_t total) {

@@ -3,7 +3,8 @@
 // late results are dropped (superseded). Results reach the GUI thread as values through
 // queued calls: map blocks that changed (with their error against the ground truth, computed
 // on the worker), progress (at most every BackgroundJob::kProgressInterval_ms), skipped
-// frames, the final result or an error. Pause holds the worker at its next cancellation
+// frames, the final result (with the 3D view's layers of its surface and mesh built on the
+// worker) or an error. Pause holds the worker at its next cancellation
 // check. The GUI thread never waits on a worker, except in the destructor, which cancels
 // every job and joins its thread.
 #pragma once
@@ -27,6 +28,10 @@ struct RunRequest {
   ReconstructionParams params;
   /// The ground truth, to colour points by their error (optional).
   std::shared_ptr<const MeshDistance> truth;
+  /// The 3D view's colouring and clip when the run started: the worker builds the surface's
+  /// and the mesh's layers for them.
+  widgets::MapView::ColourBy colour_by = widgets::MapView::ColourBy::Intensity;
+  widgets::ViewClip clip;
 };
 
 class ReconstructionRunner : public QObject {
@@ -55,11 +60,12 @@ class ReconstructionRunner : public QObject {
   void blocksChanged(int job, const std::vector<widgets::MapViewBlock>& blocks);
   void frameCarved(int job, qulonglong frame_index);
   void frameSkipped(int job, const QString& message);
-  /// `surface_errors_m`, `mesh_errors_m`: each surface point's and mesh vertex's distance to
-  /// the truth (empty without one).
+  /// `view`: the surface and the mesh with their errors against the truth (none without one)
+  /// and their layers, built on the worker for the request's colouring and clip (for
+  /// MapView::setResult); `surface_points`: the surface's positions (to measure it).
   void finished(int job, std::shared_ptr<const ReconstructionResult> result,
-                const std::vector<float>& surface_errors_m,
-                const std::vector<float>& mesh_errors_m);
+                std::shared_ptr<widgets::MapView::PreparedResult> view,
+                std::shared_ptr<const std::vector<Eigen::Vector3f>> surface_points);
   void failed(int job, const QString& message);
 
  private:

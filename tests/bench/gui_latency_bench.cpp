@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "allocator.h"
 #include "main_window.h"
 #include "params_panel.h"
 #include "vtk_gl_widget.h"
@@ -65,6 +66,7 @@ double residentMb() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  sonarcarve::gui::tuneAllocatorForLatency();  // as the workbench does
   sonarcarve::widgets::VtkGlWidget::setDefaultSurfaceFormat();
   TimedApplication app(argc, argv);
   if (argc < 2) {

@@ -7,6 +7,7 @@
 #include <QTest>
 #include <QThread>
 #include <atomic>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -109,6 +110,37 @@ TEST_F(BackgroundJobTest, ANewJobSupersedesTheRunningOne) {
   ASSERT_TRUE(QTest::qWaitFor([&] { return second.has_value() && first_stopped; }, 10000));
   QTest::qWait(100);  // anything the first job posted has been processed by now
   EXPECT_EQ(*second, 2);
+  EXPECT_EQ(first_results, 0);
+}
+
+// What a superseded job returns is never delivered, and is freed on its worker, not on the GUI
+// thread (a cancelled run's map took the GUI thread hundreds of milliseconds to free).
+TEST_F(BackgroundJobTest, ASupersededJobsResultIsFreedOnItsWorker) {
+  struct Freed {
+    explicit Freed(std::atomic<QThread*>* where) : on(where) {}
+    Freed(const Freed&) = delete;
+    Freed& operator=(const Freed&) = delete;
+    ~Freed() { *on = QThread::currentThread(); }
+    std::atomic<QThread*>* on;
+  };
+  std::atomic<QThread*> freed_on{nullptr};
+  BackgroundJob job;
+  std::atomic<bool> started{false};
+  int first_results = 0;
+  job.start(
+      [&](JobContext& context) {
+        started = true;
+        runUntilCancelled(context);
+        return std::make_shared<Freed>(&freed_on);
+      },
+      [&](const std::shared_ptr<Freed>&) { ++first_results; }, kNoError);
+  ASSERT_TRUE(QTest::qWaitFor([&] { return started.load(); }, 10000));
+  std::optional<int> second;
+  job.start([](JobContext&) { return 2; }, [&](int value) { second = value; }, kNoError);
+  ASSERT_TRUE(QTest::qWaitFor([&] { return second.has_value(); }, 10000));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return freed_on.load() != nullptr; }, 10000));
+  EXPECT_NE(freed_on.load(), QThread::currentThread());
+  QTest::qWait(100);  // anything the first job posted has been processed by now
   EXPECT_EQ(first_results, 0);
 }
 

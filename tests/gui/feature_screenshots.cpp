@@ -8,10 +8,12 @@
 //   inspect_cross_section.png        a 10 cm horizontal slice, seen from the top
 //   inspect_accuracy.png             the accuracy panel after a run
 //   inspect_mesh_error.png           the mesh coloured by its error against the truth
-//   inspect_run_history.png          two runs compared side by side
+//   inspect_run_history.png          the run history dock after two runs
+//   inspect_run_comparison.png       two runs compared side by side
 // Not a test: it asserts nothing; look at the pictures.
 #include <QApplication>
 #include <QDialog>
+#include <QDockWidget>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
@@ -59,13 +61,18 @@ int main(int argc, char** argv) {
   window.show();
   MapView& view = window.mapView();
 
-  // Mid-run: pause once about half the frames are carved.
-  QObject::connect(&window.runner(), &sonarcarve::gui::ReconstructionRunner::frameCarved, &window,
-                   [&window](int, qulonglong index) {
-                     if (index == 45 && !window.runner().paused()) {
-                       window.setPaused(true);
-                     }
-                   });
+  // Mid-run: pause the first run once about half the frames are carved. Only the first: left
+  // connected, it paused the second run at the same frame and nothing resumed it (the tool
+  // then waited 5 minutes for the second run's accuracy and gave up).
+  QMetaObject::Connection pause_midway;
+  pause_midway =
+      QObject::connect(&window.runner(), &sonarcarve::gui::ReconstructionRunner::frameCarved,
+                       &window, [&window, &pause_midway](int, qulonglong index) {
+                         if (index == 45 && !window.runner().paused()) {
+                           QObject::disconnect(pause_midway);
+                           window.setPaused(true);
+                         }
+                       });
   QSignalSpy measured(&window, &MainWindow::accuracyMeasured);
   if (!window.openMission(mission)) {
     return 1;
@@ -136,6 +143,10 @@ int main(int argc, char** argv) {
   compare->click();
   QTest::qWait(300);
   auto* dialog = window.findChild<QDialog*>("runComparison");
+  // The history is a tab behind the accuracy panel: bring it to the front.
+  if (auto* history = window.findChild<QDockWidget*>("history")) {
+    history->raise();
+  }
   save(window, out + "inspect_run_history.png");
   if (dialog != nullptr) {
     save(*dialog, out + "inspect_run_comparison.png");

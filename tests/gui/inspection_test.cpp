@@ -1,9 +1,11 @@
 // The 3D view's inspection tools on data made here, under Xvfb (the view needs OpenGL): the
 // scale bar follows the zoom, the clip box and the cross-section draw only what lies in them,
-// and the mesh is coloured by the chosen value.
+// the mesh is coloured by the chosen value, a result's layers built on a worker are shown as
+// they are, and picks are marked.
 #include <QDoubleSpinBox>
 #include <QtTest>
 #include <cmath>
+#include <thread>
 
 #include "clip_dialog.h"
 #include "map_view.h"
@@ -264,6 +266,104 @@ class InspectionTest : public QObject {
     const QColor off_truth = image.pixelColor(view.screenPositionOf({0.0, 2.0, 2.25}));
     QVERIFY2(on_truth.green() > on_truth.red() && off_truth.red() > off_truth.green(),
              qPrintable(QString("on %1, off %2").arg(on_truth.name(), off_truth.name())));
+  }
+
+  // A run's surface and mesh layers are built off the GUI thread (MapView::prepareResult on a
+  // worker); showing them builds nothing on the GUI thread when the view's colouring and clip
+  // are those they were built for, and rebuilds them when the user changed either meanwhile.
+  void aResultPreparedOnAWorkerIsShownWithoutRebuilding() {
+    MapView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const auto blocks = cubeBlocks();
+    MapViewBlock surface;
+    for (const auto& b : blocks) {
+      surface.points.insert(surface.points.end(), b.points.begin(), b.points.end());
+      surface.values.insert(surface.values.end(), b.values.begin(), b.values.end());
+    }
+    const auto prepare = [&](MapView::ColourBy by) {
+      MapView::PreparedResult prepared;
+      std::thread worker([&] {
+        prepared = MapView::prepareResult(surface, sonarcarve::widgets::meshData(twoSquares(0, 2)),
+                                          by, ViewClip{});
+      });
+      worker.join();
+      return prepared;
+    };
+    view.setColourBy(MapView::ColourBy::Depth);
+    const std::size_t built = view.resultLayersBuiltHere();
+    view.setResult(prepare(MapView::ColourBy::Depth));
+    QCOMPARE(view.resultLayersBuiltHere(), built);
+    view.setLayer(MapView::Layer::Surface);
+    QCOMPARE(view.drawnPointCount(), surface.points.size());
+    QCOMPARE(view.legendText(), QString("depth (m): 0.00 to 2.00"));
+    view.setLayer(MapView::Layer::Mesh);
+    QCOMPARE(view.drawnTriangleCount(), std::size_t{4});
+
+    // Prepared for intensity, shown after the user chose depth: rebuilt here, by depth.
+    view.setResult(prepare(MapView::ColourBy::Intensity));
+    QCOMPARE(view.resultLayersBuiltHere(), built + 2);
+    view.setLayer(MapView::Layer::Surface);
+    QCOMPARE(view.legendText(), QString("depth (m): 0.00 to 2.00"));
+    QCOMPARE(view.drawnPointCount(), surface.points.size());
+  }
+
+  // A click that picks a point marks it; a second click draws the line of the distance between
+  // the two; a third moves both on; clearing removes the marks.
+  void picksAreMarkedInTheView() {
+    MapView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    // A wall of points across east and down, seen from the south: no point hides another.
+    MapViewBlock wall;
+    for (int e = 0; e < kSide; ++e) {
+      for (int d = 0; d < kSide; ++d) {
+        wall.points.emplace_back(0.0f, 0.1f * e, 0.1f * d);
+        wall.values.push_back(static_cast<float>(e + d));
+      }
+    }
+    view.setSurface(wall);
+    view.setLayer(MapView::Layer::Surface);
+    view.viewFromSide();
+    QVERIFY(view.pickMarkerPoints().empty());
+    QVERIFY(view.pickLinePoints().empty());
+    auto* gl = view.findChild<sonarcarve::widgets::VtkGlWidget*>();
+    QVERIFY(gl);
+    QSignalSpy picked(&view, &MapView::pointPicked);
+    const Eigen::Vector3d a(0.0, 0.3, 0.4);
+    const Eigen::Vector3d b(0.0, 1.6, 1.2);
+    const Eigen::Vector3d c(0.0, 1.0, 1.9);
+    const auto near = [](const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+      return (p - q).norm() < 0.05;  // half the points' spacing
+    };
+    QTest::mouseClick(gl, Qt::LeftButton, {}, view.screenPositionOf(a));
+    QCOMPARE(picked.count(), 1);
+    QCOMPARE(view.pickMarkerPoints().size(), std::size_t{1});
+    QVERIFY(near(view.pickMarkerPoints().front(), a));
+    QVERIFY(view.pickLinePoints().empty());  // one pick: no distance yet
+
+    QTest::mouseClick(gl, Qt::LeftButton, {}, view.screenPositionOf(b));
+    QCOMPARE(picked.count(), 2);
+    QCOMPARE(view.pickMarkerPoints().size(), std::size_t{1});
+    QVERIFY(near(view.pickMarkerPoints().front(), b));
+    const auto line = view.pickLinePoints();
+    QCOMPARE(line.size(), std::size_t{2});
+    QVERIFY(near(line[0], a) && near(line[1], b));
+
+    QTest::mouseClick(gl, Qt::LeftButton, {}, view.screenPositionOf(c));
+    QVERIFY(near(view.pickMarkerPoints().front(), c));
+    QVERIFY(near(view.pickLinePoints()[0], b) && near(view.pickLinePoints()[1], c));
+
+    // The marker is drawn: magenta at the pick, on top of the viridis points.
+    const QColor marker = view.grabImage().pixelColor(view.screenPositionOf(c) + QPoint(3, 0));
+    QVERIFY2(marker.red() > 200 && marker.blue() > 150 && marker.green() < 120,
+             qPrintable(marker.name()));
+
+    view.clearPicks();
+    QVERIFY(view.pickMarkerPoints().empty());
+    QVERIFY(view.pickLinePoints().empty());
   }
 };
 

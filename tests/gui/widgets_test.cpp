@@ -8,13 +8,18 @@
 #include <QDoubleSpinBox>
 #include <QSignalSpy>
 #include <QTest>
+#include <QWidget>
 #include <cmath>
 
+#include "axes_triad.h"
+#include "colour_legend.h"
+#include "colour_maps.h"
 #include "common/angles.h"
 #include "fan_view.h"
 #include "frame_timeline.h"
 #include "params_panel.h"
 #include "pipeline/param_schema.h"
+#include "scale_bar.h"
 #include "support/test_support.h"
 
 namespace sonarcarve::widgets {
@@ -135,6 +140,53 @@ TEST_F(Widgets, ParamsPanelHasAnEditorForEveryParameterOfTheSchema) {
   panel.detectorMode()->setCurrentText("cfar");
   EXPECT_TRUE(panel.editor("detector.cfar_pfa")->isEnabled());
   EXPECT_EQ(panel.params().detector.mode, DetectorMode::Cfar);
+}
+
+// Counts the paint events a widget receives.
+class PaintCounter : public QObject {
+ public:
+  explicit PaintCounter(QWidget& widget) { widget.installEventFilter(this); }
+  int count = 0;
+
+ protected:
+  bool eventFilter(QObject*, QEvent* event) override {
+    count += event->type() == QEvent::Paint ? 1 : 0;
+    return false;
+  }
+};
+
+// The 3D view's overlays are set at every render of the view; setting what they already show
+// must not repaint them (with the OpenGL view in the window, each repaint composes the whole
+// window: tens of milliseconds with software OpenGL). A change does repaint them.
+TEST_F(Widgets, OverlaysRepaintOnlyWhenWhatTheyShowChanges) {
+  QWidget host;
+  host.resize(400, 300);
+  auto* triad = new AxesTriad(&host);
+  auto* bar = new ScaleBar(&host);
+  auto* legend = new ColourLegend(&host);
+  const std::array<QPointF, 3> axes{QPointF(0, -1), QPointF(1, 0), QPointF(0, 0)};
+  triad->setAxes(axes);
+  bar->setMetresPerPixel(0.004);
+  legend->setScale("depth (m)", 1.0, 2.0, viridisColours());
+  host.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&host));
+  QTest::qWait(50);
+  PaintCounter triad_paints(*triad);
+  PaintCounter bar_paints(*bar);
+  PaintCounter legend_paints(*legend);
+  triad->setAxes(axes);
+  bar->setMetresPerPixel(0.004);
+  legend->setScale("depth (m)", 1.0, 2.0, viridisColours());
+  QTest::qWait(50);
+  EXPECT_EQ(triad_paints.count, 0);
+  EXPECT_EQ(bar_paints.count, 0);
+  EXPECT_EQ(legend_paints.count, 0);
+  triad->setAxes({QPointF(1, 0), QPointF(0, 1), QPointF(0, 0)});
+  bar->setMetresPerPixel(0.01);
+  legend->setScale("depth (m)", 1.0, 3.0, viridisColours());
+  EXPECT_TRUE(QTest::qWaitFor([&] { return triad_paints.count > 0; }, 2000));
+  EXPECT_TRUE(QTest::qWaitFor([&] { return bar_paints.count > 0; }, 2000));
+  EXPECT_TRUE(QTest::qWaitFor([&] { return legend_paints.count > 0; }, 2000));
 }
 
 }  // namespace
