@@ -63,6 +63,7 @@ std::vector<CatalogueCase> limitCases();
 std::vector<CatalogueCase> outputCases();
 std::vector<CatalogueCase> oculusCases();
 std::vector<CatalogueCase> readerCases();
+std::vector<CatalogueCase> bagCases();
 
 // Inputs for the cases.
 inline constexpr const char* kPreviousContent = "a file of an earlier run\n";

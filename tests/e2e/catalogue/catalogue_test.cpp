@@ -21,6 +21,7 @@ INSTANTIATE_TEST_SUITE_P(Limits, Catalogue, ::testing::ValuesIn(limitCases()), n
 INSTANTIATE_TEST_SUITE_P(Outputs, Catalogue, ::testing::ValuesIn(outputCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Oculus, Catalogue, ::testing::ValuesIn(oculusCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Readers, Catalogue, ::testing::ValuesIn(readerCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Bags, Catalogue, ::testing::ValuesIn(bagCases()), nameOf);
 
 }  // namespace
 }  // namespace sonarcarve::test
