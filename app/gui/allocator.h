@@ -3,6 +3,7 @@
 // once. At a re-run's start after a riser run, freeing the 3D view's surface points merged that
 // backlog on the GUI thread for 130 to 150 ms (measured with perf; docs/benchmarks.md). Without
 // fast bins small blocks are merged as they are freed (thread caches still serve most of them).
+// Large blocks are mapped from the system, so that a run's memory goes back to it when freed.
 #pragma once
 
 namespace sonarcarve::gui {
