@@ -22,7 +22,9 @@ void addNoiseModelCommand(CLI::App& app, int& exit_code) {
     bool from_mission = false;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("mission", o->mission, "Mission of empty water (the same sonar, no target)")
+  cmd->add_option(
+         "mission", o->mission,
+         "Mission of empty water (the same sonar, no target); with --from-mission, any mission")
       ->required();
   cmd->add_option("--out", o->out, "Noise model file to write (YAML)")->required();
   cmd->add_option("--smoothing", o->smoothing,

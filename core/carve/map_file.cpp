@@ -4,13 +4,13 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <string>
+#include <utility>
 
 #include "common/available_memory.h"
 #include "common/error.h"
 #include "io/atomic_file.h"
+#include "io/input_file.h"
 
 namespace sonarcarve {
 namespace {
@@ -39,10 +39,21 @@ std::unique_ptr<VoxelMap> gridMap(double voxel_size_m, const Eigen::Vector3i& fi
   return std::make_unique<VoxelMap>(voxel_size_m, Eigen::AlignedBox3d(lo, hi));
 }
 
+// Whether box-relative block coordinates `rel` lie inside `map`'s box.
+bool insideBox(const VoxelMap& map, const Eigen::Vector3i& rel) {
+  return (rel.array() >= 0).all() && (rel.array() < map.blockDims().array()).all();
+}
+
+// The first block and one past the last of the union of two maps' boxes.
+std::pair<Eigen::Vector3i, Eigen::Vector3i> unionOfBoxes(const VoxelMap& a, const VoxelMap& b) {
+  return {a.firstBlock().cwiseMin(b.firstBlock()),
+          (a.firstBlock() + a.blockDims()).cwiseMax(b.firstBlock() + b.blockDims())};
+}
+
 // The 512 values of the block at global block coordinates `g` (unknown outside the box).
 void blockValues(const VoxelMap& map, const Eigen::Vector3i& g, Values& out) {
   const Eigen::Vector3i rel = g - map.firstBlock();
-  if ((rel.array() < 0).any() || (rel.array() >= map.blockDims().array()).any()) {
+  if (!insideBox(map, rel)) {
     out.fill(VoxelMap::kUnknown);
     return;
   }
@@ -126,20 +137,6 @@ class MapReader {
   std::size_t at_ = 0;
 };
 
-std::string readWhole(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw Error(path.string(), "", "not found: expected a SonarCarve map file (.scmap)");
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) {
-    throw Error(path.string(), "", "cannot be read");
-  }
-  return text.str();
-}
-
 }  // namespace
 
 void saveMap(const VoxelMap& map, const std::filesystem::path& path) {
@@ -172,7 +169,7 @@ void saveMap(const VoxelMap& map, const std::filesystem::path& path) {
 }
 
 std::unique_ptr<VoxelMap> loadMap(const std::filesystem::path& path) {
-  MapReader r(readWhole(path), path.string());
+  MapReader r(readInputFile(path, "SonarCarve map file (.scmap)"), path.string());
   if (r.left() == 0) {
     r.fail(0, "the file is empty; expected a SonarCarve map file (.scmap)");
   }
@@ -280,7 +277,7 @@ void fuseInto(VoxelMap& target, const VoxelMap& source) {
     }
     const Eigen::Vector3i g = source.blockCoords(n) + source.firstBlock();
     const Eigen::Vector3i rel = g - target.firstBlock();
-    if ((rel.array() < 0).any() || (rel.array() >= target.blockDims().array()).any()) {
+    if (!insideBox(target, rel)) {
       continue;
     }
     blockValues(target, g, mine);
@@ -294,9 +291,7 @@ void fuseInto(VoxelMap& target, const VoxelMap& source) {
 
 std::unique_ptr<VoxelMap> mergeMaps(const VoxelMap& a, const VoxelMap& b) {
   requireOneGrid(a, b);
-  const Eigen::Vector3i first = a.firstBlock().cwiseMin(b.firstBlock());
-  const Eigen::Vector3i last =
-      (a.firstBlock() + a.blockDims()).cwiseMax(b.firstBlock() + b.blockDims());
+  const auto [first, last] = unionOfBoxes(a, b);
   auto merged = gridMap(a.voxelSize(), first, last - first);
   fuseInto(*merged, a);
   fuseInto(*merged, b);
@@ -307,9 +302,7 @@ bool sameVoxels(const VoxelMap& a, const VoxelMap& b) {
   if (a.voxelSize() != b.voxelSize()) {
     return false;
   }
-  const Eigen::Vector3i first = a.firstBlock().cwiseMin(b.firstBlock());
-  const Eigen::Vector3i last =
-      (a.firstBlock() + a.blockDims()).cwiseMax(b.firstBlock() + b.blockDims());
+  const auto [first, last] = unionOfBoxes(a, b);
   Values va, vb;
   for (int z = first.z(); z < last.z(); ++z) {
     for (int y = first.y(); y < last.y(); ++y) {
