@@ -3,10 +3,7 @@
 #include <vtkCellArray.h>
 #include <vtkCleanPolyData.h>
 #include <vtkContourFilter.h>
-#include <vtkFlyingEdges3D.h>
 #include <vtkIdList.h>
-#include <vtkImageData.h>
-#include <vtkImageGaussianSmooth.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
@@ -20,6 +17,7 @@
 
 #include "common/error.h"
 #include "geometry/internal/vtk_mesh.h"
+#include "mesh/internal/occupancy_contour.h"
 
 namespace sonarcarve {
 namespace {
@@ -76,42 +74,12 @@ vtkSmartPointer<vtkPolyData> implicitSurface(vtkPolyData* cloud, const MeshParam
   return clean->GetOutput();
 }
 
-vtkSmartPointer<vtkPolyData> occupancySurface(const SurfacePoints& points,
-                                              const MeshParams& params) {
-  Eigen::Vector3f lo = points.front().position_m, hi = lo;
-  for (const auto& p : points) {
-    lo = lo.cwiseMin(p.position_m);
-    hi = hi.cwiseMax(p.position_m);
-  }
-  const double s = params.voxel_size_m;
-  const int margin = 3;
-  const Eigen::Vector3i dims = ((hi - lo).cast<double>() / s).array().ceil().cast<int>().matrix() +
-                               Eigen::Vector3i::Constant(2 * margin + 1);
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(dims.x(), dims.y(), dims.z());
-  image->SetSpacing(s, s, s);
-  image->SetOrigin(lo.x() - margin * s, lo.y() - margin * s, lo.z() - margin * s);
-  image->AllocateScalars(VTK_FLOAT, 1);
-  auto* values = static_cast<float*>(image->GetScalarPointer());
-  std::fill(values, values + static_cast<std::size_t>(dims.prod()), 0.0f);
-  for (const auto& p : points) {
-    const Eigen::Vector3i v =
-        ((p.position_m - lo).cast<double>() / s).array().round().cast<int>().matrix() +
-        Eigen::Vector3i::Constant(margin);
-    values[(static_cast<std::size_t>(v.z()) * dims.y() + v.y()) * dims.x() + v.x()] = 1.0f;
-  }
-  auto smooth = vtkSmartPointer<vtkImageGaussianSmooth>::New();
-  smooth->SetInputData(image);
-  smooth->SetDimensionality(3);
-  const double sigma = params.occupancy_sigma_voxels;
-  smooth->SetStandardDeviations(sigma, sigma, sigma);
-  smooth->SetRadiusFactors(2.0, 2.0, 2.0);
-  auto contour = vtkSmartPointer<vtkFlyingEdges3D>::New();
-  contour->SetInputConnection(smooth->GetOutputPort());
-  contour->SetValue(0, params.occupancy_iso);
-  contour->ComputeNormalsOff();
-  contour->Update();
-  return contour->GetOutput();
+OccupancyContourParams occupancyParams(const MeshParams& params) {
+  OccupancyContourParams contour;
+  contour.voxel_size_m = params.voxel_size_m;
+  contour.sigma_voxels = params.occupancy_sigma_voxels;
+  contour.iso = params.occupancy_iso;
+  return contour;
 }
 
 }  // namespace
@@ -137,9 +105,12 @@ Mesh meshSurface(const SurfacePoints& points, const MeshParams& params) {
   const auto cloud = pointCloud(points);
   vtkSmartPointer<vtkPolyData> surface = params.method == MeshMethod::Implicit
                                              ? implicitSurface(cloud, params)
-                                             : occupancySurface(points, params);
+                                             : occupancyContour(points, occupancyParams(params));
+  // Each filter lets go of its output once the next one has read it: memory holds about two
+  // copies of the surface, not one per filter.
   auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
   triangles->SetInputData(surface);
+  triangles->ReleaseDataFlagOn();
   // Fragments: keep the connected regions of at least min_fragment_triangles.
   auto regions = vtkSmartPointer<vtkPolyDataConnectivityFilter>::New();
   regions->SetInputConnection(triangles->GetOutputPort());
@@ -152,8 +123,10 @@ Mesh meshSurface(const SurfacePoints& points, const MeshParams& params) {
       regions->AddSpecifiedRegion(static_cast<int>(r));
     }
   }
+  regions->ReleaseDataFlagOn();
   auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
   clean->SetInputConnection(regions->GetOutputPort());
+  clean->ReleaseDataFlagOn();
   vtkAlgorithmOutput* last = clean->GetOutputPort();
   auto smoother = vtkSmartPointer<vtkWindowedSincPolyDataFilter>::New();
   if (params.smoothing_iterations > 0) {
@@ -163,12 +136,14 @@ Mesh meshSurface(const SurfacePoints& points, const MeshParams& params) {
     smoother->NonManifoldSmoothingOn();
     smoother->NormalizeCoordinatesOn();
     smoother->BoundarySmoothingOff();
+    smoother->ReleaseDataFlagOn();
     last = smoother->GetOutputPort();
   }
   auto decimate = vtkSmartPointer<vtkQuadricDecimation>::New();
   if (params.decimate > 0.0) {
     decimate->SetInputConnection(last);
     decimate->SetTargetReduction(params.decimate);
+    decimate->ReleaseDataFlagOn();
     last = decimate->GetOutputPort();
   }
   auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();

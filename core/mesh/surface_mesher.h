@@ -2,6 +2,8 @@
 //   occupancy  (default) the points' voxels, Gaussian smoothed (vtkImageGaussianSmooth,
 //              sigma 0.7 voxel) and contoured at 0.25 with flying edges: a thin closed skin
 //              around the sheet of points, within about 0.6 voxel of it. Fast (0.5 s).
+//              Tile by tile (mesh/internal/occupancy_contour.h): memory follows the
+//              surface, not its bounding box.
 //   implicit   Hoppe et al.'s signed distance to the points' tangent planes
 //              (vtkSurfaceReconstructionFilter) contoured at zero, so vertices lie on the
 //              points' surface; the contour also closes over places no point supports, so

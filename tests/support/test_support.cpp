@@ -1,9 +1,12 @@
 #include "support/test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <random>
+#include <set>
 #include <sstream>
+#include <tuple>
 
 #include "common/angles.h"
 
@@ -39,6 +42,28 @@ std::filesystem::path copyExampleMission(const std::filesystem::path& dir,
 SonarModel paperSonar() {
   return SonarModel("paper", RangeBins{0.0, 0.02, 500}, BearingTable::uniform(degToRad(130), 650),
                     degToRad(20));
+}
+
+SurfacePoints sphereShellPoints(const Eigen::Vector3f& centre, float radius_m, float voxel_m,
+                                int rings) {
+  SurfacePoints points;
+  std::set<std::tuple<int, int, int>> seen;
+  for (int i = 0; i < rings; ++i) {
+    const double polar = M_PI * (i + 0.5) / rings;
+    const int around = std::max(1, static_cast<int>(2 * rings * std::sin(polar)));
+    for (int j = 0; j < around; ++j) {
+      const double azimuth = 2 * M_PI * j / around;
+      const Eigen::Vector3f d(static_cast<float>(std::sin(polar) * std::cos(azimuth)),
+                              static_cast<float>(std::sin(polar) * std::sin(azimuth)),
+                              static_cast<float>(std::cos(polar)));
+      const Eigen::Vector3i v = ((centre + radius_m * d) / voxel_m).array().floor().cast<int>();
+      if (seen.insert({v.x(), v.y(), v.z()}).second) {
+        points.push_back({(v.cast<float>() + Eigen::Vector3f::Constant(0.5f)) * voxel_m,
+                          100.0f + static_cast<float>(i), 7});
+      }
+    }
+  }
+  return points;
 }
 
 ImagingSettings clippedBeam() {

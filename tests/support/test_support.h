@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "occlusion/surface_points.h"
 
 #include "sim/sonar_simulator.h"
 #include "sonar/sonar_model.h"
@@ -26,6 +27,11 @@ class ScratchDir {
  private:
   std::filesystem::path path_;
 };
+
+/// A sphere's surface as carving gives it: the centres of the `voxel_m` voxels it crosses,
+/// sampled on `rings` rings of latitude; each point's intensity is 100 + its ring, views 7.
+SurfacePoints sphereShellPoints(const Eigen::Vector3f& centre, float radius_m, float voxel_m,
+                                int rings);
 
 /// A file under tests/data/ (fixtures kept in the repository).
 std::filesystem::path testData(const std::string& relative);

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
-#include <tuple>
 
 #include "common/error.h"
 #include "mesh/mesh_export.h"
@@ -18,27 +16,7 @@ namespace {
 // A sphere of radius 0.5 m at (10, 20, 30) as carving gives it: the centres of the 2 cm
 // voxels its surface crosses.
 SurfacePoints spherePoints() {
-  SurfacePoints points;
-  std::set<std::tuple<int, int, int>> seen;
-  const Eigen::Vector3f centre(10, 20, 30);
-  for (int i = 0; i < 160; ++i) {
-    const double polar = M_PI * (i + 0.5) / 160;
-    const int around = std::max(1, static_cast<int>(320 * std::sin(polar)));
-    for (int j = 0; j < around; ++j) {
-      const double azimuth = 2 * M_PI * j / around;
-      const Eigen::Vector3f d(static_cast<float>(std::sin(polar) * std::cos(azimuth)),
-                              static_cast<float>(std::sin(polar) * std::sin(azimuth)),
-                              static_cast<float>(std::cos(polar)));
-      const Eigen::Vector3f p = centre + 0.5f * d;
-      const Eigen::Vector3i v = (p / 0.02f).array().floor().cast<int>();
-      if (seen.insert({v.x(), v.y(), v.z()}).second) {
-        const Eigen::Vector3f voxel_centre =
-            (v.cast<float>() + Eigen::Vector3f::Constant(0.5f)) * 0.02f;
-        points.push_back({voxel_centre, 100.0f + static_cast<float>(i), 7});
-      }
-    }
-  }
-  return points;
+  return test::sphereShellPoints({10, 20, 30}, 0.5f, 0.02f, 160);
 }
 
 TEST(Mesher, OccupancyMeshLiesWithinAVoxelOfTheSurface) {
