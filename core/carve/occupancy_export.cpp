@@ -1,50 +1,172 @@
 #include "carve/occupancy_export.h"
 
-#include <octomap/OcTree.h>
+#include <algorithm>
+#include <array>
+#include <cstdint>
 #include <sstream>
-#include <unordered_set>
+#include <string>
+#include <vector>
 
-#include "common/error.h"
 #include "io/atomic_file.h"
+
+// The .bt file is written as OctoMap's OcTree::writeBinary writes it, without building the
+// octree (hundreds of megabytes of nodes for a riser): the exported voxels lie in the map's
+// blocks of 8^3 voxels, which are the octree's subtrees three levels above its leaves, so the
+// tree is written depth first from the blocks sorted in Morton order of their keys.
+// OctoMap's format (octomap/OccupancyOcTreeBase.hxx, writeBinaryNode): a header, then for
+// each inner node two bytes holding two bits per child (children 0-3, then 4-7; bit 2i and
+// 2i+1 of each byte: 00 unknown, 10 free leaf, 01 occupied leaf, 11 inner node), then the
+// inner children in order. A child's index is its key's bit at that level on x (1), y (2) and
+// z (4). Eight children that are leaves of one state are pruned into a leaf of that state,
+// as OcTree::prune does after the maximum-likelihood step of writeBinary.
 
 namespace sonarcarve {
 namespace {
 
-octomap::OcTreeKey keyOf(const Eigen::Vector3i& voxel) {
-  return {static_cast<octomap::key_type>(voxel.x() + 32768),
-          static_cast<octomap::key_type>(voxel.y() + 32768),
-          static_cast<octomap::key_type>(voxel.z() + 32768)};
+constexpr int kTreeDepth = 16;   // OctoMap's; key = voxel index + 32768
+constexpr int kBlockLevels = 3;  // a block is a subtree of 2^3 voxels a side
+
+enum class NodeState : std::uint8_t { Unknown = 0, Free = 1, Occupied = 2, Inner = 3 };
+
+// The exported voxels of one block, as Morton-ordered leaves: leaf m is the voxel whose
+// offsets in the block have the bits of m interleaved (x, y, z).
+struct ExportBlock {
+  std::uint64_t morton = 0;  // of the block's key (voxel key >> 3)
+  std::array<NodeState, VoxelMap::kBlockVoxels> leaves{};
+};
+
+std::uint64_t interleave(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits) {
+  std::uint64_t m = 0;
+  for (int b = bits - 1; b >= 0; --b) {
+    m = m << 3 | ((z >> b) & 1u) << 2 | ((y >> b) & 1u) << 1 | ((x >> b) & 1u);
+  }
+  return m;
 }
+
+std::vector<ExportBlock> exportBlocks(const VoxelMap& map) {
+  // Occupied voxels on the shell of occupied space, which come block after block.
+  constexpr int kKeyOffset = 32768;
+  std::vector<ExportBlock> blocks;
+  std::size_t current = map.blockCount();
+  map.forEachOccupiedOnShell([&](const Eigen::Vector3i& voxel, float) {
+    const Eigen::Vector3i key = voxel + Eigen::Vector3i::Constant(kKeyOffset);
+    const Eigen::Vector3i block_key = key / VoxelMap::kBlockSide;
+    const std::size_t index =
+        map.blockIndex(block_key - Eigen::Vector3i::Constant(kKeyOffset / VoxelMap::kBlockSide) -
+                       map.firstBlock());
+    if (index != current) {
+      current = index;
+      ExportBlock block;
+      block.morton = interleave(
+          static_cast<std::uint32_t>(block_key.x()), static_cast<std::uint32_t>(block_key.y()),
+          static_cast<std::uint32_t>(block_key.z()), kTreeDepth - kBlockLevels);
+      // The carved voxels of a block that holds shell voxels: the water next to them.
+      const float* values = map.values(index);
+      for (int i = 0; i < VoxelMap::kBlockVoxels; ++i) {
+        if (values[i] == 0.0f) {
+          const int x = i % 8, y = (i / 8) % 8, z = i / 64;
+          block.leaves[interleave(x, y, z, kBlockLevels)] = NodeState::Free;
+        }
+      }
+      blocks.push_back(block);
+    }
+    const Eigen::Vector3i offset = key - block_key * VoxelMap::kBlockSide;
+    blocks.back().leaves[interleave(offset.x(), offset.y(), offset.z(), kBlockLevels)] =
+        NodeState::Occupied;
+  });
+  std::sort(blocks.begin(), blocks.end(),
+            [](const ExportBlock& a, const ExportBlock& b) { return a.morton < b.morton; });
+  return blocks;
+}
+
+// Writes the subtrees below one node depth first and says what the node is.
+class BtWriter {
+ public:
+  explicit BtWriter(const std::vector<ExportBlock>& blocks) : blocks_(blocks) {}
+  std::size_t nodes = 0;  ///< nodes written, the root not included
+
+  /// Appends to `out` the node at `level` (0: a voxel) whose key prefix is `prefix`, made of
+  /// blocks [b, e), unless it is a leaf; returns its state. The root is never pruned.
+  NodeState node(int level, std::uint64_t prefix, std::size_t b, std::size_t e, std::string& out) {
+    std::array<NodeState, 8> child{};
+    std::array<std::string, 8> below;
+    for (int c = 0; c < 8; ++c) {
+      const std::uint64_t child_prefix = prefix << 3 | static_cast<std::uint64_t>(c);
+      if (level - 1 >= kBlockLevels) {
+        // Blocks whose Morton key starts with the child's prefix.
+        const int shift = 3 * (level - 1 - kBlockLevels);
+        const auto first =
+            std::lower_bound(blocks_.begin() + static_cast<long>(b),
+                             blocks_.begin() + static_cast<long>(e), child_prefix << shift,
+                             [](const ExportBlock& x, std::uint64_t m) { return x.morton < m; });
+        auto last = first;
+        while (last != blocks_.begin() + static_cast<long>(e) &&
+               (last->morton >> shift) == child_prefix) {
+          ++last;
+        }
+        if (first != last) {
+          child[c] =
+              node(level - 1, child_prefix, static_cast<std::size_t>(first - blocks_.begin()),
+                   static_cast<std::size_t>(last - blocks_.begin()), below[c]);
+        }
+      } else if (level - 1 == 0) {
+        child[c] = blocks_[b].leaves[child_prefix & 0x1FF];
+      } else {
+        child[c] = node(level - 1, child_prefix, b, e, below[c]);
+      }
+    }
+    if (std::all_of(child.begin(), child.end(),
+                    [](NodeState s) { return s == NodeState::Unknown; })) {
+      return NodeState::Unknown;  // OctoMap holds no node where nothing is known
+    }
+    // Eight leaves of one state are pruned into one (OctoMap's prune stops at the first level
+    // that prunes nothing; here no level above one that prunes nothing can prune anything:
+    // a block, or a cube of 4^3 voxels, never holds only occupied shell voxels).
+    if (level < kTreeDepth && (child[0] == NodeState::Free || child[0] == NodeState::Occupied) &&
+        std::all_of(child.begin(), child.end(), [&](NodeState s) { return s == child[0]; })) {
+      return child[0];
+    }
+    std::uint8_t bytes[2] = {0, 0};
+    for (int c = 0; c < 8; ++c) {
+      if (child[c] == NodeState::Unknown) {
+        continue;
+      }
+      ++nodes;
+      const std::uint8_t bits = child[c] == NodeState::Free       ? 0x1
+                                : child[c] == NodeState::Occupied ? 0x2
+                                                                  : 0x3;
+      bytes[c / 4] = static_cast<std::uint8_t>(bytes[c / 4] | bits << (2 * (c % 4)));
+    }
+    out.push_back(static_cast<char>(bytes[0]));
+    out.push_back(static_cast<char>(bytes[1]));
+    for (int c = 0; c < 8; ++c) {
+      if (child[c] == NodeState::Inner) {
+        out += below[c];
+      }
+    }
+    return NodeState::Inner;
+  }
+
+ private:
+  const std::vector<ExportBlock>& blocks_;
+};
 
 }  // namespace
 
 void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path) {
-  octomap::OcTree tree(map.voxelSize());
-  // Occupied voxels on the shell of occupied space; the blocks holding them.
-  std::unordered_set<std::size_t> shell_blocks;
-  const double block = map.blockSize();
-  map.forEachOccupiedOnShell([&](const Eigen::Vector3i& voxel, float) {
-    tree.updateNode(keyOf(voxel), true, true);
-    const Eigen::Vector3i rel =
-        (map.voxelCentre(voxel) / block).array().floor().cast<int>().matrix() - map.firstBlock();
-    shell_blocks.insert(map.blockIndex(rel));
-  });
-  // The carved voxels around them: the free space next to the structure.
-  for (const std::size_t b : shell_blocks) {
-    const float* v = map.values(b);
-    for (int i = 0; i < VoxelMap::kBlockVoxels; ++i) {
-      if (v[i] == 0.0f) {
-        tree.updateNode(keyOf(map.voxelIndex(b, i)), false, true);
-      }
-    }
+  const std::vector<ExportBlock> blocks = exportBlocks(map);
+  BtWriter writer(blocks);
+  std::string data;
+  if (!blocks.empty()) {
+    writer.node(kTreeDepth, 0, 0, blocks.size(), data);
+    ++writer.nodes;  // the root
   }
-  tree.updateInnerOccupancy();
-  tree.prune();
-  std::ostringstream bt;
-  if (!tree.writeBinary(bt)) {
-    throw Error(path.string(), "", "OctoMap could not encode the .bt file");
-  }
-  writeFileAtomically(path, bt.str());
+  std::ostringstream header;
+  header << "# Octomap OcTree binary file\n"
+         << "# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
+         << "id OcTree\nsize " << writer.nodes << "\nres " << map.voxelSize() << "\ndata\n";
+  data.insert(0, header.str());
+  writeFileAtomically(path, data);
 }
 
 }  // namespace sonarcarve

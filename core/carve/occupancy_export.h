@@ -4,7 +4,9 @@
 // holding them as free: the structure and the water around it. Left out, and so unknown to a
 // viewer: the rest of the carved water, and occupied voxels buried inside occupied space
 // (under a seabed no view could carve, tens of millions of voxels): as octree nodes they
-// would take gigabytes.
+// would take gigabytes. The file is written without building an octree (the bytes OctoMap's
+// writer would write for the same voxels; memory: the exported blocks, 128 bytes each, and
+// the file).
 #pragma once
 
 #include <filesystem>
