@@ -300,8 +300,8 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
         ++my_visited;
         float* values = map_.values(b);
         std::uint8_t* counts = map_.counts(b);
-        if (values == nullptr) {
-          std::fill(std::begin(scratch), std::end(scratch), VoxelMap::kUnknown);
+        if (values == nullptr) {  // unknown, or carved and unknown voxels only
+          map_.copyValues(b, scratch);
           values = scratch;
         }
         if (counts == nullptr && map_.hasCounts()) {

@@ -57,18 +57,7 @@ void blockValues(const VoxelMap& map, const Eigen::Vector3i& g, Values& out) {
     out.fill(VoxelMap::kUnknown);
     return;
   }
-  const std::size_t b = map.blockIndex(rel);
-  switch (map.state(b)) {
-    case VoxelMap::BlockState::Unknown:
-      out.fill(VoxelMap::kUnknown);
-      return;
-    case VoxelMap::BlockState::Free:
-      out.fill(0.0f);
-      return;
-    case VoxelMap::BlockState::Mixed:
-      std::copy_n(map.values(b), kVoxels, out.begin());
-      return;
-  }
+  map.copyValues(map.blockIndex(rel), out.data());
 }
 
 void stored(VoxelMap& map, std::size_t b, const Values& values) {
@@ -141,6 +130,7 @@ class MapReader {
 
 void saveMap(const VoxelMap& map, const std::filesystem::path& path) {
   std::string out(kMagic, sizeof(kMagic));
+  Values block_values;
   put(out, kVersion);
   put(out, map.voxelSize());
   for (int a = 0; a < 3; ++a) {
@@ -159,9 +149,10 @@ void saveMap(const VoxelMap& map, const std::filesystem::path& path) {
     put(out, static_cast<std::uint64_t>(b));
     if (state == VoxelMap::BlockState::Free) {
       put(out, kFree);
-    } else {
+    } else {  // Mixed, or Partial written as its values
       put(out, kMixed);
-      out.append(reinterpret_cast<const char*>(map.values(b)), kBlockValueBytes);
+      map.copyValues(b, block_values.data());
+      out.append(reinterpret_cast<const char*>(block_values.data()), kBlockValueBytes);
     }
   }
   out.append(kEndMarker, sizeof(kEndMarker));

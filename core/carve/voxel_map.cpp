@@ -1,6 +1,7 @@
 #include "carve/voxel_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "common/error.h"
@@ -35,6 +36,7 @@ VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds, bool 
   stamp_.assign(n, 0);
   chunks_.reserve(n / kChunkBlocks + 1);
   count_chunks_.reserve(n / kChunkBlocks + 1);
+  mask_chunks_.reserve(n / kChunkBlocks + 1);
 }
 
 Eigen::AlignedBox3d VoxelMap::bounds() const {
@@ -71,6 +73,27 @@ float* VoxelMap::values(std::size_t block) {
   return state_[block] == BlockState::Mixed ? slotValues(slot_[block]) : nullptr;
 }
 
+void VoxelMap::copyValues(std::size_t block, float* out) const {
+  switch (state_[block]) {
+    case BlockState::Unknown:
+      std::fill_n(out, kBlockVoxels, kUnknown);
+      return;
+    case BlockState::Free:
+      std::fill_n(out, kBlockVoxels, 0.0f);
+      return;
+    case BlockState::Partial: {
+      const std::uint64_t* mask = slotMask(slot_[block]);
+      for (int i = 0; i < kBlockVoxels; ++i) {
+        out[i] = (mask[i / 64] >> (i % 64)) & 1u ? 0.0f : kUnknown;
+      }
+      return;
+    }
+    case BlockState::Mixed:
+      std::copy_n(slotValues(slot_[block]), kBlockVoxels, out);
+      return;
+  }
+}
+
 const std::uint8_t* VoxelMap::views(std::size_t block) const {
   return with_counts_ && state_[block] == BlockState::Mixed ? slotCounts(slot_[block]) : nullptr;
 }
@@ -105,26 +128,70 @@ float VoxelMap::value(const Eigen::Vector3i& voxel) const {
       return kUnknown;
     case BlockState::Free:
       return 0.0f;
+    case BlockState::Partial: {
+      const int i = (in.z() * kBlockSide + in.y()) * kBlockSide + in.x();
+      return (slotMask(slot_[block])[i / 64] >> (i % 64)) & 1u ? 0.0f : kUnknown;
+    }
     case BlockState::Mixed:
       break;
   }
   return values(block)[(in.z() * kBlockSide + in.y()) * kBlockSide + in.x()];
 }
 
+void VoxelMap::releaseSlot(std::size_t block) {
+  if (state_[block] == BlockState::Mixed) {
+    free_slots_.push_back(slot_[block]);
+  } else if (state_[block] == BlockState::Partial) {
+    free_mask_slots_.push_back(slot_[block]);
+  }
+  slot_[block] = -1;
+}
+
 void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint32_t stamp,
                           const std::uint8_t* new_counts) {
   stamp_[block] = stamp;
+  // Without counts, a block of carved and unknown voxels keeps a mask of its carved ones.
+  std::array<std::uint64_t, kMaskWords> mask{};
+  bool partial = new_values != nullptr && !with_counts_;
+  for (int i = 0; i < kBlockVoxels && partial; ++i) {
+    if (new_values[i] == 0.0f) {
+      mask[static_cast<std::size_t>(i / 64)] |= std::uint64_t{1} << (i % 64);
+    } else {
+      partial = new_values[i] == kUnknown;
+    }
+  }
+  if (partial && std::all_of(mask.begin(), mask.end(), [](std::uint64_t w) { return ~w == 0; })) {
+    new_values = nullptr;  // every voxel carved
+  }
   if (new_values == nullptr) {
-    if (state_[block] == BlockState::Mixed) {
+    if (state_[block] == BlockState::Mixed || state_[block] == BlockState::Partial) {
       std::lock_guard lock(storage_mutex_);
-      free_slots_.push_back(slot_[block]);
-      slot_[block] = -1;
+      releaseSlot(block);
     }
     state_[block] = BlockState::Free;
     return;
   }
+  if (partial) {
+    if (state_[block] != BlockState::Partial) {
+      std::lock_guard lock(storage_mutex_);
+      releaseSlot(block);
+      if (free_mask_slots_.empty()) {
+        if (mask_slots_used_ % kChunkBlocks == 0) {
+          mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
+        }
+        slot_[block] = static_cast<std::int32_t>(mask_slots_used_++);
+      } else {
+        slot_[block] = free_mask_slots_.back();
+        free_mask_slots_.pop_back();
+      }
+      state_[block] = BlockState::Partial;
+    }
+    std::copy(mask.begin(), mask.end(), slotMask(slot_[block]));
+    return;
+  }
   if (state_[block] != BlockState::Mixed) {
     std::lock_guard lock(storage_mutex_);
+    releaseSlot(block);
     if (free_slots_.empty()) {
       if (slots_used_ % kChunkBlocks == 0) {
         chunks_.push_back(std::make_unique<float[]>(kChunkBlocks * kBlockVoxels));
@@ -218,7 +285,8 @@ std::size_t VoxelMap::memoryBytes() const {
   return state_.capacity() * sizeof(BlockState) + slot_.capacity() * sizeof(std::int32_t) +
          stamp_.capacity() * sizeof(std::uint32_t) +
          chunks_.size() * kChunkBlocks * kBlockVoxels * sizeof(float) +
-         count_chunks_.size() * kChunkBlocks * kCountBytes;
+         count_chunks_.size() * kChunkBlocks * kCountBytes +
+         mask_chunks_.size() * kChunkBlocks * kMaskWords * sizeof(std::uint64_t);
 }
 
 }  // namespace sonarcarve

@@ -4,8 +4,10 @@
 //
 // Storage is block-sparse: blocks of 8 x 8 x 8 voxels over a bounded box of the world. A block
 // is Unknown (nothing stored), Free (every voxel carved: nothing stored, and it stays so, since
-// a minimum never rises) or Mixed (512 floats). Free and unknown space therefore cost a few
-// bytes per block, and carving skips free blocks entirely.
+// a minimum never rises), Partial (carved and unknown voxels only, as a mask of its carved
+// voxels: 64 bytes; the blocks at the edges of the views, four in five of a riser's) or Mixed
+// (512 floats, when a voxel is occupied, or in a map with counts). Free and unknown space
+// therefore cost a few bytes per block, and carving skips free blocks entirely.
 //
 // Voxel (i, j, k) covers [i, i+1) * voxel_size along north, east, down, as OctoMap's keys do
 // (key = index + 32768), so both engines and exported .bt files share one grid.
@@ -33,7 +35,7 @@ class VoxelMap {
   static constexpr int kBlockSide = 8;
   static constexpr int kBlockVoxels = kBlockSide * kBlockSide * kBlockSide;
   static constexpr float kUnknown = std::numeric_limits<float>::infinity();
-  enum class BlockState : std::uint8_t { Unknown, Free, Mixed };
+  enum class BlockState : std::uint8_t { Unknown, Free, Mixed, Partial };
 
   /// Covers `bounds` (world NED, metres), rounded outwards to whole blocks; keeps the voxels'
   /// counts when `with_counts`. Throws Error if the voxel size is not positive or the box is
@@ -60,6 +62,8 @@ class VoxelMap {
   /// The 512 values of a Mixed block (x fastest, then y, then z); nullptr otherwise.
   const float* values(std::size_t block) const;
   float* values(std::size_t block);
+  /// The 512 values of any block into `out`: unknown (+inf), carved (0) or stored.
+  void copyValues(std::size_t block, float* out) const;
   /// The counts of a Mixed block's voxels: views(block)[i] and carveVotes(block)[i] are those
   /// of values(block)[i]; nullptr otherwise and in a map without counts.
   const std::uint8_t* views(std::size_t block) const;
@@ -89,9 +93,9 @@ class VoxelMap {
   float value(const Eigen::Vector3i& voxel) const;
 
   /// Replaces a block's state after carving: `values` (512) are the block's new contents, or
-  /// nullptr for Free; `counts` (kCountBytes, or nullptr: zeros for a block that was not
-  /// Mixed, unchanged otherwise) its counts. Thread safe against other calls for *different*
-  /// blocks.
+  /// nullptr for Free (kept as Free, Partial or Mixed, whichever holds them); `counts`
+  /// (kCountBytes, or nullptr: zeros for a block that was not Mixed, unchanged otherwise) its
+  /// counts. Thread safe against other calls for *different* blocks.
   void storeBlock(std::size_t block, const float* values, std::uint32_t stamp,
                   const std::uint8_t* counts = nullptr);
 
@@ -129,6 +133,18 @@ class VoxelMap {
   std::vector<std::unique_ptr<std::uint8_t[]>> count_chunks_;
   std::size_t slots_used_ = 0;
   std::vector<std::int32_t> free_slots_;
+  // Partial blocks' masks (bit i: voxel i carved), in chunks as the values are; slot_ of a
+  // Partial block indexes them.
+  static constexpr int kMaskWords = kBlockVoxels / 64;
+  std::uint64_t* slotMask(std::int32_t slot) const {
+    const auto s = static_cast<std::size_t>(slot);
+    return mask_chunks_[s / kChunkBlocks].get() + (s % kChunkBlocks) * kMaskWords;
+  }
+  std::vector<std::unique_ptr<std::uint64_t[]>> mask_chunks_;  // capacity reserved up front
+  std::size_t mask_slots_used_ = 0;
+  std::vector<std::int32_t> free_mask_slots_;
+  /// Gives back the block's slot, if it holds one (under storage_mutex_).
+  void releaseSlot(std::size_t block);
   std::mutex storage_mutex_;
 };
 

@@ -1,0 +1,82 @@
+// The block map's storage: each block kept in the cheapest form that holds its values
+// (unknown, free, a mask of carved voxels, or its 512 values), and read back the same.
+#include <gtest/gtest.h>
+
+#include <array>
+
+#include "carve/voxel_map.h"
+
+namespace sonarcarve {
+namespace {
+
+using Values = std::array<float, VoxelMap::kBlockVoxels>;
+
+Values readBack(const VoxelMap& map, std::size_t b) {
+  Values out{};
+  map.copyValues(b, out.data());
+  return out;
+}
+
+TEST(VoxelMapStorage, CarvedAndUnknownVoxelsOnlyAreKeptAsAMaskAndReadBackTheSame) {
+  VoxelMap map(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)));
+  const std::size_t b = map.blockIndex({3, 4, 5});
+  Values edge{};  // the edge of a view: half carved, half never seen
+  for (int i = 0; i < VoxelMap::kBlockVoxels; ++i) {
+    edge[i] = i % 3 == 0 ? VoxelMap::kUnknown : 0.0f;
+  }
+  map.storeBlock(b, edge.data(), 1);
+  EXPECT_EQ(map.state(b), VoxelMap::BlockState::Partial);
+  EXPECT_EQ(map.values(b), nullptr);
+  EXPECT_EQ(readBack(map, b), edge);
+  for (int i : {0, 1, 2, 300, 511}) {
+    EXPECT_EQ(map.value(map.voxelIndex(b, i)), edge[i]);
+  }
+  // A lit voxel makes it a block of values; carving it makes it a mask again, then free.
+  Values lit = edge;
+  lit[0] = 42.0f;
+  map.storeBlock(b, lit.data(), 2);
+  EXPECT_EQ(map.state(b), VoxelMap::BlockState::Mixed);
+  EXPECT_EQ(readBack(map, b), lit);
+  EXPECT_EQ(map.occupiedCount(), 1u);
+  lit[0] = 0.0f;
+  map.storeBlock(b, lit.data(), 3);
+  EXPECT_EQ(map.state(b), VoxelMap::BlockState::Partial);
+  EXPECT_EQ(readBack(map, b), lit);
+  Values carved{};
+  map.storeBlock(b, carved.data(), 4);
+  EXPECT_EQ(map.state(b), VoxelMap::BlockState::Free);
+  EXPECT_EQ(map.stamp(b), 4u);
+}
+
+TEST(VoxelMapStorage, MasksCostAThirtySecondOfValues) {
+  VoxelMap masks(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)));
+  VoxelMap values(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)));
+  const std::size_t empty_bytes = masks.memoryBytes();
+  Values edge{}, lit{};
+  edge.fill(VoxelMap::kUnknown);
+  edge[7] = 0.0f;
+  lit = edge;
+  lit[8] = 5.0f;
+  for (std::size_t b = 0; b < 2048; ++b) {
+    masks.storeBlock(b, edge.data(), 1);
+    values.storeBlock(b, lit.data(), 1);
+  }
+  EXPECT_EQ(masks.blockCount(VoxelMap::BlockState::Partial), 2048u);
+  EXPECT_EQ(values.blockCount(VoxelMap::BlockState::Mixed), 2048u);
+  EXPECT_EQ(masks.memoryBytes() - empty_bytes, 2048u * 64u);
+  EXPECT_EQ(values.memoryBytes() - empty_bytes, 2048u * VoxelMap::kBlockVoxels * sizeof(float));
+}
+
+TEST(VoxelMapStorage, AMapWithCountsKeepsValuesForItsCounts) {
+  VoxelMap map(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)),
+               true);
+  Values edge{};
+  edge.fill(VoxelMap::kUnknown);
+  edge[3] = 0.0f;
+  map.storeBlock(0, edge.data(), 1);
+  EXPECT_EQ(map.state(0), VoxelMap::BlockState::Mixed);
+  ASSERT_NE(map.views(0), nullptr);
+}
+
+}  // namespace
+}  // namespace sonarcarve
