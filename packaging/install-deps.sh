@@ -8,8 +8,9 @@ packages=(
   build-essential cmake ninja-build pkg-config git clang-format
   # core libraries
   libeigen3-dev liboctomap-dev libembree-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-  libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
-  zlib1g-dev
+  libopencv-core-dev libopencv-imgproc-dev libpng-dev zlib1g-dev
+  # the tests read and write pictures with OpenCV too
+  libopencv-imgcodecs-dev
   # ROS 2 bags: SQLite3 storage, lz4 and zstd chunks of MCAP files
   libsqlite3-dev liblz4-dev libzstd-dev
   libvtk9-dev

@@ -1,6 +1,5 @@
 // `sonarcarve-cli frame MISSION --index N --polar P.png --fan F.png`: pictures of one frame.
 #include <iostream>
-#include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.h"
 #include "cli/source_flags.h"
@@ -8,18 +7,14 @@
 #include "denoise/detector.h"
 #include "io/atomic_file.h"
 #include "io/mission.h"
+#include "io/png_codec.h"
 #include "sonar/fan_image.h"
 
 namespace sonarcarve::cli {
 namespace {
 
 void writePng(const cv::Mat& picture, const std::string& path) {
-  std::vector<unsigned char> png;
-  if (!cv::imencode(".png", picture, png)) {
-    throw Error(path, "", "cannot encode the picture as PNG");
-  }
-  writeFileAtomically(path,
-                      std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  writeFileAtomically(path, encodePng(picture, path));
 }
 
 }  // namespace

@@ -11,6 +11,22 @@ namespace {
 int floorDiv(int a, int b) {
   return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
+
+// A slot of a pool: one given back before, or a new one (`new_chunk` adds room for
+// kChunkBlocks more when the last chunk is full).
+template <typename NewChunk>
+std::int32_t takeSlot(std::vector<std::int32_t>& free, std::size_t& used, std::size_t chunk,
+                      NewChunk&& new_chunk) {
+  if (!free.empty()) {
+    const std::int32_t slot = free.back();
+    free.pop_back();
+    return slot;
+  }
+  if (used % chunk == 0) {
+    new_chunk();
+  }
+  return static_cast<std::int32_t>(used++);
+}
 }  // namespace
 
 VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds, bool with_counts)
@@ -175,15 +191,9 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
     if (state_[block] != BlockState::Partial) {
       std::lock_guard lock(storage_mutex_);
       releaseSlot(block);
-      if (free_mask_slots_.empty()) {
-        if (mask_slots_used_ % kChunkBlocks == 0) {
-          mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
-        }
-        slot_[block] = static_cast<std::int32_t>(mask_slots_used_++);
-      } else {
-        slot_[block] = free_mask_slots_.back();
-        free_mask_slots_.pop_back();
-      }
+      slot_[block] = takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
+        mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
+      });
       state_[block] = BlockState::Partial;
     }
     std::copy(mask.begin(), mask.end(), slotMask(slot_[block]));
@@ -192,18 +202,12 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
   if (state_[block] != BlockState::Mixed) {
     std::lock_guard lock(storage_mutex_);
     releaseSlot(block);
-    if (free_slots_.empty()) {
-      if (slots_used_ % kChunkBlocks == 0) {
-        chunks_.push_back(std::make_unique<float[]>(kChunkBlocks * kBlockVoxels));
-        if (with_counts_) {
-          count_chunks_.push_back(std::make_unique<std::uint8_t[]>(kChunkBlocks * kCountBytes));
-        }
+    slot_[block] = takeSlot(free_slots_, slots_used_, kChunkBlocks, [&] {
+      chunks_.push_back(std::make_unique<float[]>(kChunkBlocks * kBlockVoxels));
+      if (with_counts_) {
+        count_chunks_.push_back(std::make_unique<std::uint8_t[]>(kChunkBlocks * kCountBytes));
       }
-      slot_[block] = static_cast<std::int32_t>(slots_used_++);
-    } else {
-      slot_[block] = free_slots_.back();
-      free_slots_.pop_back();
-    }
+    });
     state_[block] = BlockState::Mixed;
     if (with_counts_ && new_counts == nullptr) {
       std::fill_n(slotCounts(slot_[block]), kCountBytes, std::uint8_t{0});

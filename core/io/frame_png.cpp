@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <opencv2/imgcodecs.hpp>
 #include <vector>
 
 #include "common/error.h"
 #include "common/input_limits.h"
 #include "io/input_file.h"
+#include "io/png_codec.h"
 
 namespace sonarcarve {
 namespace {
@@ -58,11 +58,7 @@ std::string encodeFramePng(const cv::Mat& image, const std::string& what) {
       out[c] = static_cast<std::uint16_t>(std::lround(v));
     }
   }
-  std::vector<unsigned char> bytes;
-  if (!cv::imencode(".png", counts, bytes)) {
-    throw Error(what, "", "PNG encoding failed");
-  }
-  return std::string(bytes.begin(), bytes.end());
+  return encodePng(counts, what);
 }
 
 cv::Mat readFramePng(const std::filesystem::path& path) {
@@ -82,18 +78,7 @@ cv::Mat readFramePng(const std::filesystem::path& path) {
                 "truncated PNG: expected the IEND chunk at the end of the file");
   }
   requireFrameSize(bytes, file);
-  cv::Mat decoded;
-  try {
-    decoded = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception& e) {
-    throw Error(file, "", std::string("corrupt PNG: ") + e.what());
-  }
-  if (decoded.empty()) {
-    throw Error(file, "", "corrupt PNG: the image data cannot be decoded");
-  }
-  if (decoded.channels() != 1 || (decoded.depth() != CV_8U && decoded.depth() != CV_16U)) {
-    throw Error(file, "", "expected a single-channel 8- or 16-bit PNG");
-  }
+  const cv::Mat decoded = decodeGreyPng(content, file);
   cv::Mat image;
   decoded.convertTo(image, CV_32F);
   return image;
