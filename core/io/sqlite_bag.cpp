@@ -121,7 +121,7 @@ class SqliteBag final : public RosBag {
     sqlite3_stmt* q = prepare("SELECT id, name, type, serialization_format FROM topics", tables);
     int rc = 0;
     while ((rc = sqlite3_step(q)) == SQLITE_ROW) {
-      BagTopic topic{text(q, 1), text(q, 2), text(q, 3), 0};
+      BagTopic topic{text(q, 1), text(q, 2), text(q, 3), 0, ""};
       topic_of_id[sqlite3_column_int64(q, 0)] = topics_.size();
       topics_.push_back(std::move(topic));
     }
