@@ -201,7 +201,9 @@ void McapBag::index() {
   messages_ = std::move(kept);
   locations_ = std::move(kept_locations);
   message_channels_.clear();
-  if (topics_.empty()) {
+  // A complete file without channels is an empty recording (valid MCAP: metadata or
+  // attachments only); one cut short or corrupt before its first channel is refused.
+  if (topics_.empty() && (!ended_ || !problems_.empty())) {
     throw Error(source_, bytePlace(first),
                 "no Channel record: expected the topics of a bag" +
                     (problems_.empty() ? std::string() : " (" + problems_.front() + ")"));
