@@ -4,16 +4,20 @@
 // navigation.
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 #include "cli/source_flags.h"
 #include "common/angles.h"
+#include "common/error.h"
+#include "io/bag_summary.h"
 #include "io/frame_source.h"
 #include "io/import.h"
 #include "io/mission.h"
 #include "io/mission_summary.h"
 #include "io/oculus_log.h"
+#include "io/ros_bag.h"
 
 namespace sonarcarve::cli {
 namespace {
@@ -146,6 +150,39 @@ void infoOnLog(const std::string& path, bool json, double aperture_deg) {
   }
 }
 
+// A ROS 2 bag without a sonar topic is still listed (topics, types, message counts), with a
+// note that it has nothing to reconstruct. Returns false if the bag has a sonar topic (its
+// error when opening it as a mission is then the answer).
+bool infoOnBagWithoutSonar(const std::string& path, bool json) {
+  const std::unique_ptr<RosBag> bag = openRosBag(path);
+  const BagTopicKinds kinds(*bag);
+  if (kinds.anySonar()) {
+    return false;
+  }
+  const std::vector<std::string> contents = bagTopicLines(*bag, kinds);
+  std::vector<std::string> notes = bag->problems();
+  notes.insert(notes.begin(),
+               "no sonar topic (marine_acoustic_msgs/msg/ProjectedSonarImage, "
+               "acoustic_msgs/msg/SonarImage or raw Oculus pings): nothing to reconstruct");
+  if (json) {
+    const nlohmann::json j = {{"folder", path},
+                              {"source", "ROS 2 bag, " + bag->storage()},
+                              {"frames", {{"count", 0}}},
+                              {"contents", contents},
+                              {"warnings", notes}};
+    std::cout << j.dump(2) << "\n";
+    return true;
+  }
+  std::printf("Bag          %s (ROS 2 bag, %s)\n", path.c_str(), bag->storage().c_str());
+  for (const std::string& line : contents) {
+    std::printf("Recording    %s\n", line.c_str());
+  }
+  for (const std::string& note : notes) {
+    std::printf("Note         %s\n", note.c_str());
+  }
+  return true;
+}
+
 }  // namespace
 
 void addInfoCommand(CLI::App& app, int& exit_code) {
@@ -167,7 +204,19 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
       exit_code = 0;
       return;
     }
-    const Mission mission = openMission(*path, options);
+    std::unique_ptr<const Mission> opened;
+    try {
+      opened = std::make_unique<const Mission>(openMission(*path, options));
+    } catch (const Error&) {
+      // A valid bag without a sonar topic is listed rather than refused.
+      if (looksLikeRosBag(*path) && options.bag.sonar_topic.empty() &&
+          infoOnBagWithoutSonar(*path, *json)) {
+        exit_code = 0;
+        return;
+      }
+      throw;
+    }
+    const Mission& mission = *opened;
     const MissionSummary summary = summarize(mission, true);
     if (*json) {
       nlohmann::json j = summaryJson(mission.sonar, summary);

@@ -46,8 +46,9 @@ void addSourceFlags(CLI::App& cmd, SourceFlags& flags) {
                  "lobe, the default) or clipped (nothing outside +-aperture/2, as our simulator's "
                  "--beam clipped)")
       ->check(CLI::IsMember({"sinc", "clipped"}));
-  cmd.add_option("--sonar-topic", flags.sonar_topic,
-                 "ROS 2 bag: the sonar image topic (default: the only ProjectedSonarImage one)");
+  cmd.add_option(
+      "--sonar-topic", flags.sonar_topic,
+      "ROS 2 bag: the sonar topic (default: the only sonar image or raw Oculus ping one)");
   cmd.add_option("--nav-topic", flags.nav_topic,
                  "ROS 2 bag: the navigation topic (default: the only Odometry, PoseStamped or "
                  "PoseWithCovarianceStamped one)");

@@ -49,7 +49,7 @@ constexpr const auto& enumNamesOf(BagTime) {
 }
 
 struct BagOptions {
-  std::string sonar_topic;  ///< empty: the only sonar image topic
+  std::string sonar_topic;  ///< empty: the only sonar image or raw Oculus ping topic
   std::string nav_topic;    ///< empty: the only Odometry / PoseStamped topic
   SonarAxes axes = SonarAxes::Auto;
   ImageLayout layout = ImageLayout::RangeMajor;

@@ -1,60 +1,60 @@
 // ROS 2 bags (MCAP, SQLite3, or a bag folder) opened in place (docs/formats.md, "ROS 2
-// bags"): the messages of the sonar image topic are the frames, indexed and checked on open,
-// decoded on demand; the navigation topic gives the track and /tf_static the sonar's
-// mounting, unless --nav and --mounting replace them. Topics, conventions and the clock are
-// chosen by OpenOptions::bag; what was chosen and assumed goes to Mission::contents for `info`.
+// bags"): the messages of the sonar topic (sonar images, or raw Oculus pings: io/bag_oculus.h)
+// are the frames, indexed and checked on open, decoded on demand; the navigation topic gives the
+// track and /tf_static the sonar's mounting, unless --nav and --mounting replace them. Topics,
+// conventions and the clock are chosen by OpenOptions::bag; what was chosen and assumed goes to
+// Mission::contents for `info`.
 #include <algorithm>
+#include <functional>
 #include <numeric>
 
 #include "common/error.h"
 #include "io/bag_navigation.h"
+#include "io/bag_oculus.h"
 #include "io/bag_sonar.h"
+#include "io/bag_summary.h"
 #include "io/frame_source.h"
 #include "io/ros_bag.h"
 
 namespace sonarcarve {
 namespace {
 
-struct IndexedFrame {
-  double time_s = 0.0;
-  std::size_t message = 0;  ///< into RosBag::messages()
-};
+// The image of a sonar message's CDR bytes; `place` names the message in errors.
+using BagImageDecoder =
+    std::function<cv::Mat(std::span<const std::uint8_t> cdr, const std::string& place)>;
 
 class BagSource final : public FrameSource {
  public:
-  BagSource(std::shared_ptr<const RosBag> bag, std::string type, BagSonarGeometry geometry,
-            std::vector<IndexedFrame> frames)
+  BagSource(std::shared_ptr<const RosBag> bag, std::string sonar_id, BagImageDecoder decode,
+            std::vector<BagFrameRef> frames)
       : bag_(std::move(bag)),
-        type_(std::move(type)),
-        geometry_(std::move(geometry)),
+        sonar_id_(std::move(sonar_id)),
+        decode_(std::move(decode)),
         frames_(std::move(frames)) {}
 
   std::string kind() const override { return "ROS 2 bag, " + bag_->storage(); }
   std::size_t size() const override { return frames_.size(); }
   Frame load(std::size_t index) const override {
-    const IndexedFrame& f = frames_.at(index);
+    const BagFrameRef& f = frames_.at(index);
     const BagMessage& m = bag_->messages()[f.message];
-    const std::string source = bag_->path().string();
-    const std::vector<std::uint8_t> bytes = bag_->payload(m);
-    const ProjectedSonarImageMsg msg = decodeSonarImage(type_, bytes, source, m.place);
     Frame frame;
     frame.time_s = f.time_s;
-    frame.sonar_id = geometry_.sonar.id();
-    frame.image = bagSonarImage(msg, geometry_, source, m.place);
+    frame.sonar_id = sonar_id_;
+    frame.image = decode_(bag_->payload(m), m.place);
     return frame;
   }
 
  private:
   std::shared_ptr<const RosBag> bag_;
-  std::string type_;
-  BagSonarGeometry geometry_;
-  std::vector<IndexedFrame> frames_;
+  std::string sonar_id_;
+  BagImageDecoder decode_;
+  std::vector<BagFrameRef> frames_;
 };
 
 std::string kindName(RosMessageKind kind) {
   switch (kind) {
     case RosMessageKind::SonarImage:
-      return "sonar image";
+      return "sonar";
     case RosMessageKind::VehiclePose:
       return "navigation (Odometry, PoseStamped or PoseWithCovarianceStamped)";
     case RosMessageKind::Transforms:
@@ -65,32 +65,39 @@ std::string kindName(RosMessageKind kind) {
   return "other";
 }
 
+std::string expectedOf(RosMessageKind kind) {
+  return kind == RosMessageKind::SonarImage
+             ? std::string(kProjectedSonarImageType) +
+                   " (or acoustic_msgs/msg/SonarImage), or raw Oculus pings (a uint8[] field "
+                   "starting with the Oculus magic 53 4F)"
+             : "nav_msgs/msg/Odometry, geometry_msgs/msg/PoseStamped or "
+               "geometry_msgs/msg/PoseWithCovarianceStamped";
+}
+
 // The topic to read: the one `requested`, or else the only topic of `kind`. Returns nothing
 // when the bag has none and none was requested.
-std::optional<std::size_t> chooseTopic(const RosBag& bag, RosMessageKind kind,
-                                       const std::string& requested, const std::string& flag) {
+std::optional<std::size_t> chooseTopic(const RosBag& bag, const BagTopicKinds& kinds,
+                                       RosMessageKind kind, const std::string& requested,
+                                       const std::string& flag) {
   std::vector<std::size_t> candidates;
   std::string listed;
   for (std::size_t t = 0; t < bag.topics().size(); ++t) {
     const BagTopic& topic = bag.topics()[t];
-    if (rosMessageKind(topic.type) == kind) {
+    if (kinds.is(t, kind)) {
       candidates.push_back(t);
       listed += (listed.empty() ? "" : ", ") + topic.name + " (" + topic.type + ")";
     }
   }
   const std::string source = bag.path().string();
-  const std::string expected = kind == RosMessageKind::SonarImage
-                                   ? std::string(kProjectedSonarImageType)
-                                   : "nav_msgs/msg/Odometry, geometry_msgs/msg/PoseStamped or "
-                                     "geometry_msgs/msg/PoseWithCovarianceStamped";
   if (!requested.empty()) {
     for (std::size_t t = 0; t < bag.topics().size(); ++t) {
       if (bag.topics()[t].name != requested) {
         continue;
       }
-      if (rosMessageKind(bag.topics()[t].type) != kind) {
-        throw Error(source, "topic " + requested,
-                    "type " + bag.topics()[t].type + " (" + flag + "): expected " + expected);
+      if (!kinds.is(t, kind)) {
+        throw Error(
+            source, "topic " + requested,
+            "type " + bag.topics()[t].type + " (" + flag + "): expected " + expectedOf(kind));
       }
       return t;
     }
@@ -111,16 +118,6 @@ std::optional<std::size_t> chooseTopic(const RosBag& bag, RosMessageKind kind,
 
 double timeOf(const BagMessage& m, const RosHeader& header, BagTime clock) {
   return (clock == BagTime::Header ? header.stamp_ns : m.receive_ns) * 1e-9;
-}
-
-std::vector<std::string> topicLines(const RosBag& bag) {
-  std::vector<std::string> lines{"storage " + bag.storage() + ", " +
-                                 std::to_string(bag.messages().size()) + " messages"};
-  for (const BagTopic& t : bag.topics()) {
-    lines.push_back("topic " + t.name + ": " + t.type + ", " + std::to_string(t.messages) +
-                    " messages" + (t.encoding == "cdr" ? "" : " (encoding " + t.encoding + ")"));
-  }
-  return lines;
 }
 
 // Every message of `topic`, decoded by `decode`; those that fail are reported and skipped.
@@ -149,46 +146,76 @@ void requireCdr(const RosBag& bag, std::size_t topic) {
   }
 }
 
+// A sonar topic's frames, however its messages carry them.
 struct SonarFrames {
-  std::optional<BagSonarGeometry> geometry;
-  std::vector<IndexedFrame> frames;
+  std::optional<SonarModel> sonar;
+  SonarAxes axes = SonarAxes::XForward;  ///< of the sonar frame, for the /tf_static mounting
+  std::vector<BagFrameRef> frames;
   std::string frame_id;
+  std::vector<std::string> notes;
+  BagImageDecoder decode;
 };
 
-SonarFrames indexSonarFrames(const RosBag& bag, std::size_t topic, const OpenOptions& options,
-                             std::vector<std::string>& problems) {
+SonarFrames indexSonarImages(const std::shared_ptr<const RosBag>& bag, std::size_t topic,
+                             const OpenOptions& options, std::vector<std::string>& problems) {
   SonarFrames out;
-  const std::string source = bag.path().string();
-  const std::string& type = bag.topics()[topic].type;
+  std::optional<BagSonarGeometry> geometry;
+  const std::string source = bag->path().string();
+  const std::string type = bag->topics()[topic].type;
   // The older SonarImage states its frame and layout; the options are for ProjectedSonarImage.
   const bool legacy = isLegacySonarImage(type);
   const SonarAxes axes = legacy ? SonarAxes::Frd : options.bag.axes;
   const ImageLayout layout = legacy ? ImageLayout::BeamMajor : options.bag.layout;
-  forEachMessage(bag, topic, problems, [&](std::size_t i, const BagMessage& m, const auto& bytes) {
+  forEachMessage(*bag, topic, problems, [&](std::size_t i, const BagMessage& m, const auto& bytes) {
     const ProjectedSonarImageMsg msg = decodeSonarImage(type, bytes, source, m.place);
-    if (!out.geometry) {
-      out.geometry = bagSonarGeometry(msg, axes, layout, options.vertical_aperture_deg, "ros-bag",
-                                      source, m.place);
+    if (!geometry) {
+      geometry = bagSonarGeometry(msg, axes, layout, options.vertical_aperture_deg, "ros-bag",
+                                  source, m.place);
       if (legacy) {
-        out.geometry->notes.push_back(
+        geometry->notes.push_back(
             "acoustic_msgs/msg/SonarImage: azimuths in its NED sonar frame and azimuth-major "
             "data, as the message defines (--sonar-axes and --image-layout do not apply)");
       }
-      bagSonarImage(msg, *out.geometry, source, m.place);
+      bagSonarImage(msg, *geometry, source, m.place);
       out.frame_id = msg.header.frame_id;
     }
-    checkBagSonarMessage(msg, *out.geometry, source, m.place);
+    checkBagSonarMessage(msg, *geometry, source, m.place);
     out.frames.push_back({timeOf(m, msg.header, options.bag.time) + options.time_offset_s, i});
   });
-  if (!out.geometry) {
+  if (!geometry) {
     throw Error(
-        source, "topic " + bag.topics()[topic].name,
+        source, "topic " + bag->topics()[topic].name,
         "no readable sonar message" +
             (problems.empty() ? std::string() : " (first problem: " + problems.front() + ")"));
   }
-  std::stable_sort(
-      out.frames.begin(), out.frames.end(),
-      [](const IndexedFrame& a, const IndexedFrame& b) { return a.time_s < b.time_s; });
+  std::stable_sort(out.frames.begin(), out.frames.end(),
+                   [](const BagFrameRef& a, const BagFrameRef& b) { return a.time_s < b.time_s; });
+  out.sonar = geometry->sonar;
+  out.axes = geometry->axes;
+  out.notes = geometry->notes;
+  out.decode = [type, source, g = std::move(*geometry)](std::span<const std::uint8_t> cdr,
+                                                        const std::string& place) {
+    return bagSonarImage(decodeSonarImage(type, cdr, source, place), g, source, place);
+  };
+  return out;
+}
+
+// Raw Oculus pings: their bearings are the sonar's own, in a REP-103 sensor frame (X forward).
+SonarFrames indexOculusPings(const std::shared_ptr<const RosBag>& bag, std::size_t topic,
+                             const OpenOptions& options, std::vector<std::string>& problems) {
+  BagOculusFrames pings = indexOculusFrames(*bag, topic, options.bag.time, options.time_offset_s,
+                                            options.vertical_aperture_deg, problems);
+  SonarFrames out;
+  out.sonar = pings.sonar;
+  out.axes = SonarAxes::XForward;
+  out.frames = std::move(pings.frames);
+  out.frame_id = pings.frame_id;
+  out.notes = std::move(pings.notes);
+  const std::string source = bag->path().string();
+  out.decode = [source, sonar = *pings.sonar, name = bag->topics()[topic].name](
+                   std::span<const std::uint8_t> cdr, const std::string& place) {
+    return bagOculusImage(cdr, sonar, source, "topic " + name + ", " + place);
+  };
   return out;
 }
 
@@ -214,34 +241,36 @@ Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
   std::shared_ptr<const RosBag> bag = openRosBag(path);
   const std::string source = path.string();
   std::vector<std::string> problems = bag->problems();
-  std::vector<std::string> contents = topicLines(*bag);
+  const BagTopicKinds kinds(*bag);
+  std::vector<std::string> contents = bagTopicLines(*bag, kinds);
 
-  const auto sonar_topic =
-      chooseTopic(*bag, RosMessageKind::SonarImage, options.bag.sonar_topic, "--sonar-topic");
+  const auto sonar_topic = chooseTopic(*bag, kinds, RosMessageKind::SonarImage,
+                                       options.bag.sonar_topic, "--sonar-topic");
   if (!sonar_topic) {
     std::string types;
     for (const BagTopic& t : bag->topics()) {
       types += (types.empty() ? "" : ", ") + t.name + " (" + t.type + ")";
     }
     throw Error(source, "",
-                "no sonar image topic: expected " + std::string(kProjectedSonarImageType) +
-                    " (or acoustic_msgs/msg/SonarImage); the bag has " + types);
+                "no sonar topic: expected " + expectedOf(RosMessageKind::SonarImage) +
+                    "; the bag has " + (types.empty() ? std::string("no topics") : types));
   }
   requireCdr(*bag, *sonar_topic);
-  SonarFrames sonar = indexSonarFrames(*bag, *sonar_topic, options, problems);
-  const BagSonarGeometry& geometry = *sonar.geometry;
+  SonarFrames sonar = kinds.oculus(*sonar_topic)
+                          ? indexOculusPings(bag, *sonar_topic, options, problems)
+                          : indexSonarImages(bag, *sonar_topic, options, problems);
   contents.push_back("sonar topic " + bag->topics()[*sonar_topic].name + ", frame '" +
                      sonar.frame_id + "', " + std::to_string(sonar.frames.size()) + " frames");
-  contents.insert(contents.end(), geometry.notes.begin(), geometry.notes.end());
+  contents.insert(contents.end(), sonar.notes.begin(), sonar.notes.end());
   contents.push_back(std::string("time: ") + (options.bag.time == BagTime::Header
                                                   ? "header stamps (--time-source header)"
                                                   : "bag receive times (--time-source receive)"));
 
   std::vector<double> times;
-  for (const IndexedFrame& f : sonar.frames) {
+  for (const BagFrameRef& f : sonar.frames) {
     times.push_back(f.time_s);
   }
-  Mission mission = recordingMission(path, geometry.sonar, times, [&](std::size_t k) {
+  Mission mission = recordingMission(path, *sonar.sonar, times, [&](std::size_t k) {
     return bag->messages()[sonar.frames[k].message].place;
   });
 
@@ -249,7 +278,7 @@ Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
   bool body_frd = false;
   if (options.nav_csv.empty()) {
     const auto nav_topic =
-        chooseTopic(*bag, RosMessageKind::VehiclePose, options.bag.nav_topic, "--nav-topic");
+        chooseTopic(*bag, kinds, RosMessageKind::VehiclePose, options.bag.nav_topic, "--nav-topic");
     if (nav_topic) {
       requireCdr(*bag, *nav_topic);
       std::vector<TimedPose> poses;
@@ -278,7 +307,7 @@ Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
     }
   }
   const auto mounting = bagMounting(staticTransforms(*bag, problems), body_frame, body_frd,
-                                    sonar.frame_id, geometry.axes);
+                                    sonar.frame_id, sonar.axes);
   if (mounting) {
     mission.mounting = *mounting;
     contents.push_back("mounting from /tf_static: " + body_frame + " -> " + sonar.frame_id);
@@ -293,8 +322,8 @@ Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
   }
   mission.contents = std::move(contents);
   applyNavigationAndMounting(mission, options);
-  mission.source = std::make_shared<const BagSource>(bag, bag->topics()[*sonar_topic].type,
-                                                     geometry, std::move(sonar.frames));
+  mission.source = std::make_shared<const BagSource>(
+      bag, sonar.sonar->id(), std::move(sonar.decode), std::move(sonar.frames));
   return mission;
 }
 

@@ -15,16 +15,10 @@
 namespace sonarcarve {
 namespace {
 
-struct TopicSpec {
-  std::string name;
-  std::string type;
-};
-
+// A message of a mission's bag: topic 0 sonar, 1 navigation, 2 tf_static.
 struct OutMessage {
-  std::size_t topic = 0;  ///< 0 sonar, 1 navigation, 2 tf_static
   std::int64_t stamp_ns = 0;
-  std::int64_t receive_ns = 0;
-  std::vector<std::uint8_t> data;
+  BagMessageSpec message;
 };
 
 std::int64_t nanoseconds(double seconds) {
@@ -96,8 +90,8 @@ ProjectedSonarImageMsg sonarMessage(const SonarModel& sonar, const BagWriteOptio
   return msg;
 }
 
-std::vector<OutMessage> bagMessages(const Mission& mission, const BagWriteOptions& options,
-                                    BagWriteReport& report) {
+std::vector<BagMessageSpec> bagMessages(const Mission& mission, const BagWriteOptions& options,
+                                        BagWriteReport& report) {
   std::vector<OutMessage> out;
   ProjectedSonarImageMsg sonar = sonarMessage(mission.sonar, options);
   for (std::size_t i = 0; i < mission.frames.size(); ++i) {
@@ -108,9 +102,9 @@ std::vector<OutMessage> bagMessages(const Mission& mission, const BagWriteOption
     sonar.header.stamp_ns = nanoseconds(mission.frames[i].time_s);
     sonar.dtype = static_cast<std::uint32_t>(dtype);
     sonar.data = data;
-    out.push_back({0, sonar.header.stamp_ns,
-                   sonar.header.stamp_ns + nanoseconds(options.receive_delay_s),
-                   encodeProjectedSonarImage(sonar)});
+    out.push_back({sonar.header.stamp_ns,
+                   {0, sonar.header.stamp_ns + nanoseconds(options.receive_delay_s),
+                    encodeProjectedSonarImage(sonar)}});
     ++report.frames;
   }
   const RosFrameConventions rep103;
@@ -121,7 +115,7 @@ std::vector<OutMessage> bagMessages(const Mission& mission, const BagWriteOption
     pose.child_frame_id = "base_link";
     pose.position = T.translation();
     pose.orientation = Eigen::Quaterniond(T.linear());
-    out.push_back({1, pose.header.stamp_ns, pose.header.stamp_ns, encodeOdometry(pose)});
+    out.push_back({pose.header.stamp_ns, {1, pose.header.stamp_ns, encodeOdometry(pose)}});
     ++report.poses;
   }
   const Eigen::Isometry3d T_body_sonar =
@@ -135,37 +129,41 @@ std::vector<OutMessage> bagMessages(const Mission& mission, const BagWriteOption
   mounting.child_frame_id = options.sonar_frame;
   mounting.translation = T_body_sonar.translation();
   mounting.rotation = Eigen::Quaterniond(T_body_sonar.linear());
-  out.push_back({2, first, first, encodeTfMessage({mounting})});
-  std::stable_sort(out.begin(), out.end(), [](const OutMessage& a, const OutMessage& b) {
-    return a.receive_ns < b.receive_ns;
-  });
-  if (!out.empty() && out.front().receive_ns < 0) {
-    throw Error("bag writer", "",
-                "a time before 0 s: expected times from 0 (a bag's receive times are unsigned)");
+  out.push_back({first, {2, first, encodeTfMessage({mounting})}});
+  std::vector<BagMessageSpec> messages;
+  for (OutMessage& m : out) {
+    messages.push_back(std::move(m.message));
   }
-  return out;
+  return messages;
 }
 
-std::vector<TopicSpec> topicsOf(const BagWriteOptions& options) {
-  return {{options.sonar_topic, kProjectedSonarImageType},
-          {options.nav_topic, kOdometryType},
-          {"/tf_static", kTfMessageType}};
+std::vector<BagTopicSpec> topicsOf(const BagWriteOptions& options) {
+  std::vector<BagTopicSpec> topics{{options.sonar_topic, kProjectedSonarImageType, ""},
+                                   {options.nav_topic, kOdometryType, ""},
+                                   {"/tf_static", kTfMessageType, ""}};
+  for (BagTopicSpec& t : topics) {
+    t.definition = rosMessageDefinition(t.type);
+  }
+  return topics;
 }
 
-void writeMcap(const std::filesystem::path& out, const std::vector<OutMessage>& messages,
-               const BagWriteOptions& options) {
-  const McapChunks chunks = options.format == BagFormat::McapUnchunked ? McapChunks::None
-                            : options.format == BagFormat::McapLz4     ? McapChunks::Lz4
-                            : options.format == BagFormat::McapNone    ? McapChunks::Uncompressed
-                                                                       : McapChunks::Zstd;
-  McapWriter writer(chunks, options.chunk_bytes);
-  const std::vector<TopicSpec> topics = topicsOf(options);
+void writeMcap(const std::filesystem::path& out, const std::vector<BagTopicSpec>& topics,
+               const std::vector<BagMessageSpec>& messages, BagFormat format,
+               std::size_t chunk_bytes) {
+  const McapChunks chunks = format == BagFormat::McapUnchunked ? McapChunks::None
+                            : format == BagFormat::McapLz4     ? McapChunks::Lz4
+                            : format == BagFormat::McapNone    ? McapChunks::Uncompressed
+                                                               : McapChunks::Zstd;
+  McapWriter writer(chunks, chunk_bytes);
   for (std::size_t t = 0; t < topics.size(); ++t) {
     const auto id = static_cast<std::uint16_t>(t + 1);
-    writer.addSchema(id, topics[t].type, rosMessageDefinition(topics[t].type));
-    writer.addChannel(id, id, topics[t].name);
+    const bool schema = !topics[t].type.empty();
+    if (schema) {
+      writer.addSchema(id, topics[t].type, topics[t].definition);
+    }
+    writer.addChannel(id, schema ? id : 0, topics[t].name);
   }
-  for (const OutMessage& m : messages) {
+  for (const BagMessageSpec& m : messages) {
     writer.addMessage(static_cast<std::uint16_t>(m.topic + 1),
                       static_cast<std::uint64_t>(m.receive_ns),
                       static_cast<std::uint64_t>(m.receive_ns), m.data);
@@ -183,8 +181,8 @@ void sqlite(sqlite3* db, const char* sql, const std::filesystem::path& out) {
   }
 }
 
-void writeDb3(const std::filesystem::path& out, const std::vector<OutMessage>& messages,
-              const BagWriteOptions& options) {
+void writeDb3(const std::filesystem::path& out, const std::vector<BagTopicSpec>& topics,
+              const std::vector<BagMessageSpec>& messages) {
   const std::filesystem::path temporary =
       out.parent_path() / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
   std::filesystem::remove(temporary);
@@ -202,7 +200,6 @@ void writeDb3(const std::filesystem::path& out, const std::vector<OutMessage>& m
            "CREATE INDEX timestamp_idx ON messages (timestamp ASC);"
            "BEGIN TRANSACTION;",
            out);
-    const std::vector<TopicSpec> topics = topicsOf(options);
     for (std::size_t t = 0; t < topics.size(); ++t) {
       const std::string sql = "INSERT INTO topics VALUES(" + std::to_string(t + 1) + ", '" +
                               topics[t].name + "', '" + topics[t].type + "', 'cdr', '')";
@@ -210,7 +207,7 @@ void writeDb3(const std::filesystem::path& out, const std::vector<OutMessage>& m
     }
     sqlite3_prepare_v2(db, "INSERT INTO messages(topic_id, timestamp, data) VALUES(?, ?, ?)", -1,
                        &insert, nullptr);
-    for (const OutMessage& m : messages) {
+    for (const BagMessageSpec& m : messages) {
       sqlite3_reset(insert);
       sqlite3_bind_int64(insert, 1, static_cast<sqlite3_int64>(m.topic + 1));
       sqlite3_bind_int64(insert, 2, m.receive_ns);
@@ -244,13 +241,26 @@ BagWriteReport writeRosBag(const Mission& mission, const std::filesystem::path& 
     throw Error("bag writer", "", "sonar axes must be z-forward or x-forward, not auto");
   }
   BagWriteReport report;
-  const std::vector<OutMessage> messages = bagMessages(mission, options, report);
-  if (options.format == BagFormat::Db3) {
-    writeDb3(out, messages, options);
-  } else {
-    writeMcap(out, messages, options);
-  }
+  writeBagMessages(out, options.format, topicsOf(options), bagMessages(mission, options, report),
+                   options.chunk_bytes);
   return report;
+}
+
+void writeBagMessages(const std::filesystem::path& out, BagFormat format,
+                      const std::vector<BagTopicSpec>& topics, std::vector<BagMessageSpec> messages,
+                      std::size_t chunk_bytes) {
+  std::stable_sort(
+      messages.begin(), messages.end(),
+      [](const BagMessageSpec& a, const BagMessageSpec& b) { return a.receive_ns < b.receive_ns; });
+  if (!messages.empty() && messages.front().receive_ns < 0) {
+    throw Error("bag writer", "",
+                "a time before 0 s: expected times from 0 (a bag's receive times are unsigned)");
+  }
+  if (format == BagFormat::Db3) {
+    writeDb3(out, topics, messages);
+  } else {
+    writeMcap(out, topics, messages, format, chunk_bytes);
+  }
 }
 
 }  // namespace sonarcarve

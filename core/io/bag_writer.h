@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "common/enum_names.h"
 #include "io/bag_options.h"
@@ -50,6 +51,28 @@ struct BagWriteReport {
   std::size_t frames = 0;
   std::size_t poses = 0;
 };
+
+/// A topic of a bag to write: its type's name and definition (ros2msg text, for MCAP schemas).
+/// An empty type writes an MCAP channel without a schema.
+struct BagTopicSpec {
+  std::string name;
+  std::string type;
+  std::string definition;
+};
+
+/// A message to write: its topic (index into the topics), receive time and CDR bytes.
+struct BagMessageSpec {
+  std::size_t topic = 0;
+  std::int64_t receive_ns = 0;
+  std::vector<std::uint8_t> data;
+};
+
+/// Writes `messages` of `topics`, sorted by receive time, as an MCAP file (chunked as `format`
+/// says) or a .db3 file: the storage under writeRosBag, for any message type (tests write raw
+/// Oculus pings with it). Throws Error on a time before 0 or a file that cannot be written.
+void writeBagMessages(const std::filesystem::path& out, BagFormat format,
+                      const std::vector<BagTopicSpec>& topics, std::vector<BagMessageSpec> messages,
+                      std::size_t chunk_bytes = std::size_t{4} << 20);
 
 /// Writes every frame, navigation sample and the mounting of `mission` to `out` (atomically:
 /// a temporary file renamed). Throws Error naming `out` or the frame on failure, and for

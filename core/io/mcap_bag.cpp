@@ -147,7 +147,7 @@ class McapBag final : public RosBag {
   std::vector<std::string> problems_;
   std::vector<Chunk> chunks_;
   std::vector<std::string> compressions_;
-  std::map<std::uint16_t, std::pair<std::string, std::string>> schemas_;  ///< name, encoding
+  std::map<std::uint16_t, std::pair<std::string, std::string>> schemas_;  ///< name, ros2msg text
   std::map<std::uint16_t, std::size_t> channels_;                         ///< -> topics_
   bool ended_ = false;
 
@@ -201,7 +201,9 @@ void McapBag::index() {
   messages_ = std::move(kept);
   locations_ = std::move(kept_locations);
   message_channels_.clear();
-  if (topics_.empty()) {
+  // A complete file without channels is an empty recording (valid MCAP: metadata or
+  // attachments only); one cut short or corrupt before its first channel is refused.
+  if (topics_.empty() && (!ended_ || !problems_.empty())) {
     throw Error(source_, bytePlace(first),
                 "no Channel record: expected the topics of a bag" +
                     (problems_.empty() ? std::string() : " (" + problems_.front() + ")"));
@@ -269,8 +271,12 @@ void McapBag::handle(std::uint8_t op, Bytes content, std::int64_t chunk, std::si
       const auto id = in.read<std::uint16_t>("Schema.id");
       std::string name = in.string("Schema.name");
       std::string encoding = in.string("Schema.encoding");
-      in.prefixed<std::uint32_t>("Schema.data");
-      schemas_[id] = {std::move(name), std::move(encoding)};
+      const Bytes data = in.prefixed<std::uint32_t>("Schema.data");
+      std::string definition;
+      if (encoding == "ros2msg") {
+        definition.assign(reinterpret_cast<const char*>(data.data()), data.size());
+      }
+      schemas_[id] = {std::move(name), std::move(definition)};
       return;
     }
     case mcap::kChannel: {
@@ -284,7 +290,10 @@ void McapBag::handle(std::uint8_t op, Bytes content, std::int64_t chunk, std::si
         in.fail("channel '" + topic.name + "' names schema " + std::to_string(schema) +
                 ", which no earlier Schema record defines");
       }
-      topic.type = schema == 0 ? "" : s->second.first;
+      if (schema != 0) {
+        topic.type = s->second.first;
+        topic.definition = s->second.second;
+      }
       if (!channels_.contains(id)) {
         channels_[id] = topics_.size();
         topics_.push_back(std::move(topic));

@@ -82,7 +82,7 @@ class FolderBag final : public RosBag {
         const auto key = std::make_pair(t.name, t.type);
         const auto [it, added] = merged.try_emplace(key, topics_.size());
         if (added) {
-          topics_.push_back({t.name, t.type, t.encoding, 0});
+          topics_.push_back({t.name, t.type, t.encoding, 0, t.definition});
         }
         topics_[it->second].messages += t.messages;
         topic_map.push_back(it->second);

@@ -21,6 +21,8 @@ struct BagTopic {
   std::string type;      ///< as stored ("marine_acoustic_msgs/msg/ProjectedSonarImage")
   std::string encoding;  ///< "cdr"
   std::size_t messages = 0;
+  /// The message definition (an MCAP schema's ros2msg text); "" when the bag has none.
+  std::string definition;
 };
 
 struct BagMessage {

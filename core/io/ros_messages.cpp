@@ -65,7 +65,9 @@ std::string shortType(std::string_view type) {
   return at == std::string::npos ? t : t.substr(0, at) + t.substr(at + 4);
 }
 
-RosHeader readHeader(CdrReader& in) {
+}  // namespace
+
+RosHeader readRosHeader(CdrReader& in) {
   RosHeader header;
   const auto sec = in.read<std::int32_t>("header.stamp.sec");
   const auto nanosec = in.read<std::uint32_t>("header.stamp.nanosec");
@@ -76,6 +78,8 @@ RosHeader readHeader(CdrReader& in) {
   header.frame_id = in.readString("header.frame_id");
   return header;
 }
+
+namespace {
 
 Eigen::Vector3d readVector3(CdrReader& in, const char* what) {
   const double x = in.read<double>(what);
@@ -187,7 +191,7 @@ std::size_t sonarDtypeSize(std::uint32_t dtype) {
 RosHeader decodeRosHeader(std::span<const std::uint8_t> cdr, const std::string& source,
                           const std::string& place) {
   CdrReader in(cdr, source, place);
-  return readHeader(in);
+  return readRosHeader(in);
 }
 
 ProjectedSonarImageMsg decodeProjectedSonarImage(std::span<const std::uint8_t> cdr,
@@ -195,7 +199,7 @@ ProjectedSonarImageMsg decodeProjectedSonarImage(std::span<const std::uint8_t> c
                                                  const std::string& place) {
   CdrReader in(cdr, source, place);
   ProjectedSonarImageMsg msg;
-  msg.header = readHeader(in);
+  msg.header = readRosHeader(in);
   msg.frequency_hz = in.read<float>("ping_info.frequency");
   msg.sound_speed_mps = in.read<float>("ping_info.sound_speed");
   msg.tx_beamwidths_rad = in.readSequence<float>("ping_info.tx_beamwidths");
@@ -219,7 +223,7 @@ ProjectedSonarImageMsg decodeLegacySonarImage(std::span<const std::uint8_t> cdr,
                                               const std::string& source, const std::string& place) {
   CdrReader in(cdr, source, place);
   ProjectedSonarImageMsg msg;
-  msg.header = readHeader(in);
+  msg.header = readRosHeader(in);
   msg.frequency_hz = in.read<float>("frequency");
   msg.sound_speed_mps = in.read<float>("sound_speed");
   msg.rx_beamwidths_rad = {in.read<float>("azimuth_beamwidth")};
@@ -255,7 +259,7 @@ RosPoseMsg decodeRosPose(std::string_view type, std::span<const std::uint8_t> cd
   const std::string t = shortType(type);
   CdrReader in(cdr, source, place);
   RosPoseMsg msg;
-  msg.header = readHeader(in);
+  msg.header = readRosHeader(in);
   if (t == "nav_msgs/Odometry") {
     msg.child_frame_id = in.readString("child_frame_id");
   } else if (t != "geometry_msgs/PoseStamped" && t != "geometry_msgs/PoseWithCovarianceStamped") {
@@ -282,7 +286,7 @@ std::vector<RosTransformMsg> decodeTfMessage(std::span<const std::uint8_t> cdr,
   const std::uint32_t count = in.readCount(72, "transforms");
   std::vector<RosTransformMsg> out(count);
   for (RosTransformMsg& t : out) {
-    t.header = readHeader(in);
+    t.header = readRosHeader(in);
     t.child_frame_id = in.readString("child_frame_id");
     t.translation = readVector3(in, "transform.translation");
     t.rotation = readQuaternion(in, "transform.rotation");

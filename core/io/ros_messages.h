@@ -85,6 +85,9 @@ struct RosTransformMsg {
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
 };
 
+class CdrReader;
+/// A std_msgs/Header at the reader's place (stamp checked: nanoseconds below 10^9).
+RosHeader readRosHeader(CdrReader& in);
 /// Only the header of any stamped message (cheap: for time stamps).
 RosHeader decodeRosHeader(std::span<const std::uint8_t> cdr, const std::string& source,
                           const std::string& place);

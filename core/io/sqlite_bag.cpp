@@ -1,8 +1,10 @@
 // rosbag2's SQLite3 storage (.db3): tables topics(id, name, type, serialization_format, ...)
-// and messages(id, topic_id, timestamp, data); newer bags add schema and metadata tables,
-// which are not needed. Payloads compressed one by one (rosbag2's compression_mode: message,
-// zstd) are decompressed. The file is opened read-only and immutable (no journal is written
-// beside a bag that may sit on read-only media); payloads are read by row id on demand.
+// and messages(id, topic_id, timestamp, data); newer bags add schema, metadata and
+// message_definitions tables (the definitions are kept: they say whether a type starts with a
+// header) and a type_description_hash column, which is not needed. Payloads compressed one by one
+// (rosbag2's compression_mode: message, zstd) are decompressed. The file is opened read-only and
+// immutable (no journal is written beside a bag that may sit on read-only media); payloads are read
+// by row id on demand.
 #include <sqlite3.h>
 
 #include <map>
@@ -121,7 +123,7 @@ class SqliteBag final : public RosBag {
     sqlite3_stmt* q = prepare("SELECT id, name, type, serialization_format FROM topics", tables);
     int rc = 0;
     while ((rc = sqlite3_step(q)) == SQLITE_ROW) {
-      BagTopic topic{text(q, 1), text(q, 2), text(q, 3), 0};
+      BagTopic topic{text(q, 1), text(q, 2), text(q, 3), 0, ""};
       topic_of_id[sqlite3_column_int64(q, 0)] = topics_.size();
       topics_.push_back(std::move(topic));
     }
@@ -129,6 +131,7 @@ class SqliteBag final : public RosBag {
     if (rc != SQLITE_DONE) {
       throw Error(source_, "table topics", "SQLite: " + errorText() + " (expected " + tables + ")");
     }
+    readMessageDefinitions();
     q = prepare("SELECT id, topic_id, timestamp FROM messages ORDER BY timestamp, id", tables);
     std::size_t orphans = 0;
     while ((rc = sqlite3_step(q)) == SQLITE_ROW) {
@@ -160,6 +163,32 @@ class SqliteBag final : public RosBag {
       throw Error(source_, "table topics", "no topic: expected the topics of a bag");
     }
     payload_query_ = prepare("SELECT data FROM messages WHERE id = ?", tables);
+  }
+
+  // Bags from ROS 2 Iron on keep each type's definition in a message_definitions table;
+  // older bags have none (then definitions stay empty).
+  void readMessageDefinitions() {
+    sqlite3_stmt* q = prepare(
+        "SELECT name FROM sqlite_master WHERE type = 'table' AND name = 'message_definitions'",
+        "the SQLite schema table");
+    const bool present = sqlite3_step(q) == SQLITE_ROW;
+    sqlite3_finalize(q);
+    if (!present) {
+      return;
+    }
+    q = prepare("SELECT topic_type, encoding, encoded_message_definition FROM message_definitions",
+                "message_definitions(topic_type, encoding, encoded_message_definition)");
+    while (sqlite3_step(q) == SQLITE_ROW) {
+      if (text(q, 1) != "ros2msg") {
+        continue;
+      }
+      for (BagTopic& topic : topics_) {
+        if (topic.type == text(q, 0)) {
+          topic.definition = text(q, 2);
+        }
+      }
+    }
+    sqlite3_finalize(q);
   }
 
   std::filesystem::path path_;

@@ -12,6 +12,7 @@
 #include "denoise/noise_model.h"
 #include "geometry/scene_io.h"
 #include "io/aris_file.h"
+#include "io/bag_oculus.h"
 #include "io/bag_sonar.h"
 #include "io/frame_png.h"
 #include "io/mission.h"
@@ -113,6 +114,21 @@ void decodeBag(const RosBag& bag) {
         case RosMessageKind::Other:
           decodeRosHeader(bytes, source, m.place);
           break;
+      }
+    });
+  }
+  // Raw Oculus pings, as the bag frame source reads them.
+  for (std::size_t t = 0; t < bag.topics().size(); ++t) {
+    acceptingErrors([&] {
+      if (!isOculusTopic(bag, t)) {
+        return;
+      }
+      std::vector<std::string> problems;
+      const BagOculusFrames pings =
+          indexOculusFrames(bag, t, BagTime::Header, 0.0, std::nullopt, problems);
+      for (const BagFrameRef& f : pings.frames) {
+        const BagMessage& m = bag.messages()[f.message];
+        acceptingErrors([&] { bagOculusImage(bag.payload(m), *pings.sonar, source, m.place); });
       }
     });
   }

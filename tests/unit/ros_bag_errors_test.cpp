@@ -136,10 +136,10 @@ TEST(RosBagErrors, ABagWithoutSonarImagesNamesItsTopicsAndTheTypeExpected) {
   const test::ScratchDir dir;
   const auto path =
       oneTopicBag(dir, "camera.mcap", "/camera/image", "sensor_msgs/msg/Image", {0, 1, 0, 0});
-  test::expectError([&] { openMission(path); },
-                    {"camera.mcap", "no sonar image topic",
-                     "expected marine_acoustic_msgs/msg/ProjectedSonarImage",
-                     "/camera/image (sensor_msgs/msg/Image)"});
+  test::expectError(
+      [&] { openMission(path); },
+      {"camera.mcap", "no sonar topic", "expected marine_acoustic_msgs/msg/ProjectedSonarImage",
+       "/camera/image (sensor_msgs/msg/Image)"});
 }
 
 TEST(RosBagErrors, MessagesThatAreNotTheirSchemasTypeAreAClearError) {
@@ -172,8 +172,8 @@ TEST(RosBagErrors, TwoSonarTopicsNeedAChoiceAndTheChoiceIsRead) {
                          nullptr, nullptr, nullptr),
             SQLITE_OK);
   sqlite3_close(db);
-  test::expectError([&] { openMission(path); }, {"two.db3", "2 sonar image topics", "/sonar/image",
-                                                 "/sonar/other", "--sonar-topic"});
+  test::expectError([&] { openMission(path); },
+                    {"two.db3", "2 sonar topics", "/sonar/image", "/sonar/other", "--sonar-topic"});
   OpenOptions choice;
   choice.bag.sonar_topic = "/sonar/other";
   EXPECT_EQ(openMission(path, choice).frames.size(), 2U);

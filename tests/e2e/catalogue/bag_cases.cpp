@@ -76,7 +76,7 @@ std::vector<CatalogueCase> bagCases() {
               {"bag.mcap: byte 8", "expected the Header record"}),
       bagCase("McapUnknownSonarTopic", BagFormat::Mcap, "bag.mcap", unchanged,
               "reconstruct bag.mcap --sonar-topic /nope --out out", Outcome::Fails,
-              {"bag.mcap", "no topic /nope (--sonar-topic)", "sonar image topics: /sonar/image"},
+              {"bag.mcap", "no topic /nope (--sonar-topic)", "sonar topics: /sonar/image"},
               {"out"}),
       bagCase("Db3Garbage", BagFormat::Db3, "bag.db3",
               [](const std::string&) { return std::string("SQLite format 3\0garbage", 23); },
