@@ -298,6 +298,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
           continue;
         }
         ++my_visited;
+        map_.markVisited(b, stamp);
         float* values = map_.values(b);
         std::uint8_t* counts = map_.counts(b);
         if (values == nullptr) {  // unknown, or carved and unknown voxels only
@@ -315,10 +316,10 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
         my_observed += static_cast<std::size_t>(change.observed);
         if (change.values) {
           ++my_changed;
-          map_.storeBlock(b, allCarved(values) ? nullptr : values, stamp, counts);
+          map_.storeBlock(b, allCarved(values) ? nullptr : values, stamp, counts, false);
         } else if (change.counts && values == scratch) {
           // Votes on voxels not yet carved nor lit: kept for the views to come.
-          map_.storeBlock(b, values, map_.stamp(b), counts);
+          map_.storeBlock(b, values, map_.stamp(b), counts, false);
         }
       }
     }
@@ -326,6 +327,12 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
     changed_blocks += my_changed;
     observed += my_observed;
   });
+  // Blocks the views have left for kColdFrames frames are masked if they can be: the views
+  // move on (0.8 s at 10 Hz), and a block they come back to is expanded again when reached.
+  constexpr std::uint32_t kColdFrames = 8;
+  if (stamp % kColdFrames == 0) {
+    map_.compactColdBlocks(stamp, kColdFrames);
+  }
   return {visited.load(), changed_blocks.load(), observed.load()};
 }
 

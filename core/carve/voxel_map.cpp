@@ -12,6 +12,24 @@ int floorDiv(int a, int b) {
   return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
 
+// The mask of a block's carved voxels, if it holds carved and unknown voxels only.
+bool carvedMask(const float* values, std::array<std::uint64_t, 8>& mask) {
+  for (std::size_t w = 0; w < mask.size(); ++w) {
+    const float* v = values + 64 * w;
+    std::uint64_t carved = 0;
+    bool only_carved_or_unknown = true;
+    for (int i = 0; i < 64; ++i) {  // no branch: the compiler vectorises it
+      carved |= static_cast<std::uint64_t>(v[i] == 0.0f) << i;
+      only_carved_or_unknown &= v[i] == 0.0f || v[i] == VoxelMap::kUnknown;
+    }
+    if (!only_carved_or_unknown) {
+      return false;
+    }
+    mask[w] = carved;
+  }
+  return true;
+}
+
 // A slot of a pool: one given back before, or a new one (`new_chunk` adds room for
 // kChunkBlocks more when the last chunk is full).
 template <typename NewChunk>
@@ -50,6 +68,7 @@ VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds, bool 
   state_.assign(n, BlockState::Unknown);
   slot_.assign(n, -1);
   stamp_.assign(n, 0);
+  visited_.assign(n, 0);
   chunks_.reserve(n / kChunkBlocks + 1);
   count_chunks_.reserve(n / kChunkBlocks + 1);
   mask_chunks_.reserve(n / kChunkBlocks + 1);
@@ -98,9 +117,20 @@ void VoxelMap::copyValues(std::size_t block, float* out) const {
       std::fill_n(out, kBlockVoxels, 0.0f);
       return;
     case BlockState::Partial: {
-      const std::uint64_t* mask = slotMask(slot_[block]);
-      for (int i = 0; i < kBlockVoxels; ++i) {
-        out[i] = (mask[i / 64] >> (i % 64)) & 1u ? 0.0f : kUnknown;
+      // Eight voxels at a time from a table of the 256 patterns of a mask byte.
+      static const auto patterns = [] {
+        std::array<std::array<float, 8>, 256> table{};
+        for (int byte = 0; byte < 256; ++byte) {
+          for (int bit = 0; bit < 8; ++bit) {
+            table[static_cast<std::size_t>(byte)][static_cast<std::size_t>(bit)] =
+                (byte >> bit) & 1 ? 0.0f : kUnknown;
+          }
+        }
+        return table;
+      }();
+      const auto* bytes = reinterpret_cast<const unsigned char*>(slotMask(slot_[block]));
+      for (int b = 0; b < kBlockVoxels / 8; ++b) {
+        std::copy_n(patterns[bytes[b]].data(), 8, out + 8 * b);
       }
       return;
     }
@@ -154,8 +184,38 @@ float VoxelMap::value(const Eigen::Vector3i& voxel) const {
   return values(block)[(in.z() * kBlockSide + in.y()) * kBlockSide + in.x()];
 }
 
+void VoxelMap::storeMask(std::size_t block, const std::array<std::uint64_t, kMaskWords>& mask) {
+  if (state_[block] != BlockState::Partial) {
+    releaseSlot(block);
+    slot_[block] = takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
+      mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
+    });
+    state_[block] = BlockState::Partial;
+  }
+  std::copy(mask.begin(), mask.end(), slotMask(slot_[block]));
+}
+
+void VoxelMap::compactColdBlocks(std::uint32_t now, std::uint32_t cold_after) {
+  if (with_counts_) {
+    return;
+  }
+  std::array<std::uint64_t, kMaskWords> mask{};
+  for (std::size_t slot = 0; slot < slot_block_.size(); ++slot) {
+    const std::int32_t block = slot_block_[slot];
+    if (block < 0) {
+      continue;
+    }
+    const auto b = static_cast<std::size_t>(block);
+    const auto age = static_cast<std::uint16_t>(static_cast<std::uint16_t>(now) - visited_[b]);
+    if (age > cold_after && carvedMask(slotValues(slot_[b]), mask)) {
+      storeMask(b, mask);
+    }
+  }
+}
+
 void VoxelMap::releaseSlot(std::size_t block) {
   if (state_[block] == BlockState::Mixed) {
+    slot_block_[static_cast<std::size_t>(slot_[block])] = -1;
     free_slots_.push_back(slot_[block]);
   } else if (state_[block] == BlockState::Partial) {
     free_mask_slots_.push_back(slot_[block]);
@@ -164,18 +224,12 @@ void VoxelMap::releaseSlot(std::size_t block) {
 }
 
 void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint32_t stamp,
-                          const std::uint8_t* new_counts) {
+                          const std::uint8_t* new_counts, bool compact) {
   stamp_[block] = stamp;
   // Without counts, a block of carved and unknown voxels keeps a mask of its carved ones.
   std::array<std::uint64_t, kMaskWords> mask{};
-  bool partial = new_values != nullptr && !with_counts_;
-  for (int i = 0; i < kBlockVoxels && partial; ++i) {
-    if (new_values[i] == 0.0f) {
-      mask[static_cast<std::size_t>(i / 64)] |= std::uint64_t{1} << (i % 64);
-    } else {
-      partial = new_values[i] == kUnknown;
-    }
-  }
+  const bool partial =
+      compact && new_values != nullptr && !with_counts_ && carvedMask(new_values, mask);
   if (partial && std::all_of(mask.begin(), mask.end(), [](std::uint64_t w) { return ~w == 0; })) {
     new_values = nullptr;  // every voxel carved
   }
@@ -188,15 +242,8 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
     return;
   }
   if (partial) {
-    if (state_[block] != BlockState::Partial) {
-      std::lock_guard lock(storage_mutex_);
-      releaseSlot(block);
-      slot_[block] = takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
-        mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
-      });
-      state_[block] = BlockState::Partial;
-    }
-    std::copy(mask.begin(), mask.end(), slotMask(slot_[block]));
+    std::lock_guard lock(storage_mutex_);
+    storeMask(block, mask);
     return;
   }
   if (state_[block] != BlockState::Mixed) {
@@ -208,6 +255,10 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
         count_chunks_.push_back(std::make_unique<std::uint8_t[]>(kChunkBlocks * kCountBytes));
       }
     });
+    if (slot_block_.size() < slots_used_) {
+      slot_block_.resize(slots_used_, -1);
+    }
+    slot_block_[static_cast<std::size_t>(slot_[block])] = static_cast<std::int32_t>(block);
     state_[block] = BlockState::Mixed;
     if (with_counts_ && new_counts == nullptr) {
       std::fill_n(slotCounts(slot_[block]), kCountBytes, std::uint8_t{0});

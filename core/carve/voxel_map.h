@@ -6,7 +6,9 @@
 // is Unknown (nothing stored), Free (every voxel carved: nothing stored, and it stays so, since
 // a minimum never rises), Partial (carved and unknown voxels only, as a mask of its carved
 // voxels: 64 bytes; the blocks at the edges of the views, four in five of a riser's) or Mixed
-// (512 floats, when a voxel is occupied, or in a map with counts). Free and unknown space
+// (512 floats, when a voxel is occupied, or in a map with counts). While views still reach a
+// block the carver keeps it as floats, and masks it once they have moved on
+// (compactColdBlocks): carving never expands the blocks it works on. Free and unknown space
 // therefore cost a few bytes per block, and carving skips free blocks entirely.
 //
 // Voxel (i, j, k) covers [i, i+1) * voxel_size along north, east, down, as OctoMap's keys do
@@ -21,6 +23,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -76,6 +79,13 @@ class VoxelMap {
   static constexpr std::uint8_t kSeenBelow = 0x80;
   /// Frame stamp of the last change of a block (0: never changed).
   std::uint32_t stamp(std::size_t block) const { return stamp_[block]; }
+  /// Notes that a view at `stamp` reached the block. Thread safe for different blocks.
+  void markVisited(std::size_t block, std::uint32_t stamp) {
+    visited_[block] = static_cast<std::uint16_t>(stamp);
+  }
+  /// Keeps as masks the Mixed blocks of carved and unknown voxels only that no view has
+  /// reached in the `cold_after` stamps before `now`. Not thread safe.
+  void compactColdBlocks(std::uint32_t now, std::uint32_t cold_after);
 
   /// Global index of voxel `i` (0..511, x fastest) of block `block`.
   Eigen::Vector3i voxelIndex(std::size_t block, int i) const {
@@ -96,8 +106,10 @@ class VoxelMap {
   /// nullptr for Free (kept as Free, Partial or Mixed, whichever holds them); `counts`
   /// (kCountBytes, or nullptr: zeros for a block that was not Mixed, unchanged otherwise) its
   /// counts. Thread safe against other calls for *different* blocks.
+  /// `compact` false keeps values of carved and unknown voxels as floats (a block views still
+  /// reach; compactColdBlocks masks it later).
   void storeBlock(std::size_t block, const float* values, std::uint32_t stamp,
-                  const std::uint8_t* counts = nullptr);
+                  const std::uint8_t* counts = nullptr, bool compact = true);
 
   /// Calls f(global voxel index, value) for every occupied voxel (0 < value < inf).
   void forEachOccupied(const std::function<void(const Eigen::Vector3i&, float)>& f) const;
@@ -118,6 +130,8 @@ class VoxelMap {
   std::vector<BlockState> state_;
   std::vector<std::int32_t> slot_;  // Mixed blocks: index into storage_ / kBlockVoxels
   std::vector<std::uint32_t> stamp_;
+  std::vector<std::uint16_t> visited_;    // stamp of the last view that reached a block, mod 2^16
+  std::vector<std::int32_t> slot_block_;  // the block a value slot holds, or -1
   // Block contents live in chunks of kChunkBlocks blocks whose addresses never change, so
   // threads may carve Mixed blocks in place while others allocate new ones.
   static constexpr std::size_t kChunkBlocks = 1024;
@@ -145,6 +159,8 @@ class VoxelMap {
   std::vector<std::int32_t> free_mask_slots_;
   /// Gives back the block's slot, if it holds one (under storage_mutex_).
   void releaseSlot(std::size_t block);
+  /// Keeps `mask` (bit i: voxel i carved) as the block's contents (under storage_mutex_).
+  void storeMask(std::size_t block, const std::array<std::uint64_t, 8>& mask);
   std::mutex storage_mutex_;
 };
 

@@ -67,6 +67,32 @@ TEST(VoxelMapStorage, MasksCostAThirtySecondOfValues) {
   EXPECT_EQ(values.memoryBytes() - empty_bytes, 2048u * VoxelMap::kBlockVoxels * sizeof(float));
 }
 
+TEST(VoxelMapStorage, BlocksTheViewsHaveLeftAreMaskedAndTheOthersKeepTheirFloats) {
+  VoxelMap map(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)));
+  Values edge{}, lit{};
+  edge.fill(VoxelMap::kUnknown);
+  edge[9] = 0.0f;
+  lit = edge;
+  lit[10] = 7.0f;
+  // As the carver stores them: floats while views reach them.
+  map.storeBlock(0, edge.data(), 1, nullptr, false);
+  map.storeBlock(1, edge.data(), 1, nullptr, false);
+  map.storeBlock(2, lit.data(), 1, nullptr, false);
+  for (std::size_t b = 0; b < 3; ++b) {
+    map.markVisited(b, 1);
+    EXPECT_EQ(map.state(b), VoxelMap::BlockState::Mixed);
+  }
+  map.compactColdBlocks(8, 8);  // nothing has been left for more than 8 frames
+  EXPECT_EQ(map.state(0), VoxelMap::BlockState::Mixed);
+  map.markVisited(1, 12);  // still in view at 12
+  map.compactColdBlocks(16, 8);
+  EXPECT_EQ(map.state(0), VoxelMap::BlockState::Partial);  // left at 1
+  EXPECT_EQ(map.state(1), VoxelMap::BlockState::Mixed);    // reached at 12
+  EXPECT_EQ(map.state(2), VoxelMap::BlockState::Mixed);    // holds an occupied voxel
+  EXPECT_EQ(readBack(map, 0), edge);
+  EXPECT_EQ(readBack(map, 2), lit);
+}
+
 TEST(VoxelMapStorage, AMapWithCountsKeepsValuesForItsCounts) {
   VoxelMap map(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)),
                true);
