@@ -218,8 +218,8 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--visible-cell", o->visible_cell_m,
                   "Ground truth: one seen surface point per cell of this side, m, in "
-                  "visible_points.ply; 0: none written (a long survey's take memory with the area "
-                  "seen: docs/simulator.md)")
+                  "visible_points.ply; 0: none written (they take memory with the area seen: "
+                  "docs/simulator.md)")
       ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str();
   cmd->add_option("--reflectivity", o->reflectivity, "Reflectivity of a loaded mesh, 0..1")
