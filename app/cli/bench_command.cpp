@@ -1,15 +1,18 @@
-// `sonarcarve-cli bench simulate`: speed of the engine's steps at the seed paper's parameters.
+// `sonarcarve-cli bench simulate|carve|reconstruct`: speed of the engine's steps at the seed
+// paper's parameters, and of whole reconstructions of long missions (cli/bench_reconstruct.h).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include "carve/carving_geometry.h"
 #include "carve/fast_carver.h"
 #include "carve/reference_carver.h"
+#include "cli/bench_reconstruct.h"
 #include "cli/commands.h"
 #include "cli/terminal_progress.h"
+#include "common/error.h"
+#include "common/process_memory.h"
 #include "common/thread_pool.h"
 #include "occlusion/occlusion_resolver.h"
 #include "pipeline/keep_level.h"
@@ -31,6 +34,7 @@ struct BenchOptions {
   int frames = 40;
   std::string beam = "clipped";
   bool json = false;
+  BenchReconstructOptions reconstruct;
 };
 
 struct Timings {
@@ -111,16 +115,9 @@ int benchSimulate(const BenchOptions& o, ThreadPool& pool) {
   return 0;
 }
 
-// Peak resident memory of this process so far, from /proc (Linux), in MB.
+// Peak resident memory of this process so far (Linux), in MB.
 double peakMemoryMb() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) {
-      return std::stod(line.substr(6)) / 1024.0;
-    }
-  }
-  return 0.0;
+  return megabytes(processMemory().value_or(ProcessMemory{}).peak_resident_bytes);
 }
 
 // The whole demo mission in memory (no file I/O in the timings): the fast engine's map
@@ -248,21 +245,46 @@ int benchCarve(const BenchOptions& o, ThreadPool& pool) {
 void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto* cmd = app.add_subcommand("bench", "Measure the engine's speed at the paper's parameters");
   auto o = std::make_shared<BenchOptions>();
-  cmd->add_option("what", o->what, "simulate | carve")
-      ->check(CLI::IsMember({"simulate", "carve"}))
+  cmd->add_option("what", o->what,
+                  "simulate | carve | reconstruct (a whole run of MISSION: ms per frame of every "
+                  "stage, the real-time factor, memory against frames carved)")
+      ->check(CLI::IsMember({"simulate", "carve", "reconstruct"}))
+      ->capture_default_str();
+  cmd->add_option("mission", o->reconstruct.mission, "reconstruct: the mission to reconstruct");
+  cmd->add_option("--params", o->reconstruct.params_file,
+                  "reconstruct: parameters YAML (default: the defaults)");
+  cmd->add_option("--csv", o->reconstruct.csv,
+                  "reconstruct: write the memory samples to this CSV (time_s, stage, done, total, "
+                  "frames_carved, rss_mb, peak_rss_mb, rss_anon_mb)");
+  cmd->add_option("--sample-every", o->reconstruct.sample_every,
+                  "reconstruct: units of a stage (frames) between memory samples")
+      ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   cmd->add_flag("--region", o->region, "carve: map a 4 m column around the structure only");
   cmd->add_option("--reference-frames", o->reference_frames,
                   "carve: frames to time the reference engine on")
       ->capture_default_str();
   cmd->add_option("--scene", o->scene, "Demo scene")->capture_default_str();
-  cmd->add_option("--frames", o->frames, "Frames to time")->capture_default_str();
+  cmd->add_option("--frames", o->frames,
+                  "Frames to time; reconstruct: the mission's first this many (default: all)")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
   cmd->add_option("--beam", o->beam,
                   "clipped | realistic (docs/simulator.md); carve: beam-aware on realistic")
       ->check(CLI::IsMember({"clipped", "realistic"}))
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the figures as JSON");
-  cmd->callback([o, &pool, &exit_code] {
+  cmd->callback([cmd, o, &pool, &exit_code] {
+    if (o->what == "reconstruct") {
+      if (o->reconstruct.mission.empty()) {
+        throw Error("bench reconstruct", "", "expected a MISSION to reconstruct");
+      }
+      BenchReconstructOptions r = o->reconstruct;
+      r.frames = cmd->count("--frames") > 0 ? o->frames : 0;
+      r.json = o->json;
+      exit_code = benchReconstruct(r, pool);
+      return;
+    }
     exit_code = o->what == "carve" ? benchCarve(*o, pool) : benchSimulate(*o, pool);
   });
 }

@@ -26,6 +26,8 @@ struct SimulateOptions {
   std::string out;
   double standoff_m = 4.5;
   double step_m = 0.1;
+  TrajectorySpec survey;  // speed, lawnmower and orbit settings, frames
+  std::uint64_t field_seed = 1;
   int max_frames = -1;
   std::uint64_t seed = 1;
   NavErrorSpec nav_error;
@@ -33,6 +35,7 @@ struct SimulateOptions {
   int rays_per_beam = 2;
   std::string beam = "realistic";
   double horizontal_beam_width_deg = 0.0;
+  double visible_cell_m = 0.01;
   float reflectivity = 0.8f;
   bool empty_water = false;
   bool force = false;
@@ -40,6 +43,12 @@ struct SimulateOptions {
 };
 
 NavErrorSpec navErrorWithSeed(NavErrorSpec spec, std::uint64_t seed) {
+  spec.seed = seed;
+  return spec;
+}
+
+SeabedFieldSpec fieldWithSeed(std::uint64_t seed) {
+  SeabedFieldSpec spec;
   spec.seed = seed;
   return spec;
 }
@@ -76,7 +85,7 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   if (std::filesystem::exists(out / "mission.yaml") && !o.force) {
     throw Error(out.string(), "", "already holds a mission; choose another --out or add --force");
   }
-  TrajectorySpec trajectory;
+  TrajectorySpec trajectory = o.survey;
   trajectory.kind = o.trajectory == "auto" ? usualTrajectory(o.scene) : o.trajectory;
   trajectory.standoff_m = o.standoff_m;
   trajectory.step_m = o.step_m;
@@ -85,8 +94,13 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   imaging.rays_per_beam = o.rays_per_beam;
   imaging.beam = beamFromName(o.beam);
   imaging.horizontal_beam_width_rad = degToRad(o.horizontal_beam_width_deg);
+  imaging.visible_cell_m = o.visible_cell_m;
+  // The seabed field is surveyed as a field: only its tiles near the sonar are built.
+  const bool field = o.scene == "seabed-field";
   const SimulationRequest request{
-      isDemoScene(o.scene) ? makeDemoScene(o.scene) : loadSceneMesh(o.scene, o.reflectivity),
+      field                  ? Scene{}
+      : isDemoScene(o.scene) ? makeDemoScene(o.scene)
+                             : loadSceneMesh(o.scene, o.reflectivity),
       o.scene,
       paperSonar(),
       trajectory,
@@ -99,12 +113,16 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   prepareOutputFolder(out);
 
   TerminalProgress progress;
-  const SimulationResult result = runSimulation(request, progress, pool);
+  const SimulationResult result = runSimulation(
+      request, progress, pool,
+      field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt);
   progress.finish();
   std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
-            << result.frames_written << " frames of '" << request.scene.name << "' ("
-            << request.trajectory.kind << ") to " << out.string() << "; " << result.visible_points
-            << " visible surface points\n";
+            << result.frames_written << " frames of '" << (field ? o.scene : request.scene.name)
+            << "' (" << request.trajectory.kind << ") to " << out.string() << "; "
+            << result.visible_points << " visible surface points; at most "
+            << result.most_triangles_traced << " scene triangles traced at once, "
+            << result.ground_truth_triangles << " in the ground truth\n";
   if (result.cancelled) {
     return 130;
   }
@@ -127,8 +145,9 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto* cmd = app.add_subcommand("simulate", "Simulate a sonar mission with ground truth");
   auto o = std::make_shared<SimulateOptions>();
   cmd->add_option("--scene", o->scene,
-                  "riser | jacket-node | seabed-objects | manifold | mesh file (STL, OBJ, PLY) in "
-                  "world NED metres")
+                  "riser | jacket-node | seabed-objects | manifold | seabed-field (a seabed of any "
+                  "extent with objects, for long surveys) | mesh file (STL, OBJ, PLY) in world "
+                  "NED metres")
       ->required();
   cmd->add_option("--trajectory", o->trajectory,
                   "vertical | orbit | lawnmower | navigation CSV of vehicle poses; auto picks the "
@@ -140,6 +159,41 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--step", o->step_m, "Distance between frames, m")
       ->check(CLI::Range(kMinSimStep_m, kMaxSimStep_m))
+      ->capture_default_str();
+  cmd->add_option("--speed", o->survey.speed_mps,
+                  "Vehicle speed, m/s: with --step it sets the frame rate (0.5 m/s and 0.05 m: "
+                  "10 Hz)")
+      ->check(CLI::Range(1e-3, 100.0))
+      ->capture_default_str();
+  cmd->add_option("--frames", o->survey.frames,
+                  "orbit and lawnmower: go on for this many frames (more laps, or more lines to "
+                  "the east); 0: one lap, or the lines of a --survey-width square")
+      ->check(CLI::Range(0, kMaxSimFrames))
+      ->capture_default_str();
+  cmd->add_option("--laps", o->survey.laps, "orbit: turns around the axis (without --frames)")
+      ->check(CLI::Range(0.01, 10000.0))
+      ->capture_default_str();
+  cmd->add_option("--line-length", o->survey.line_length_m, "lawnmower: length of a line, m")
+      ->check(CLI::Range(0.1, 10000.0))
+      ->capture_default_str();
+  cmd->add_option("--line-spacing", o->survey.line_spacing_m,
+                  "lawnmower: distance between lines, m")
+      ->check(CLI::Range(0.01, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--survey-width", o->survey.survey_width_m,
+                  "lawnmower: east-west extent of the lines, m (without --frames)")
+      ->check(CLI::Range(0.0, 10000.0))
+      ->capture_default_str();
+  cmd->add_option("--altitude", o->survey.altitude_m, "lawnmower: height above the seabed, m")
+      ->check(CLI::Range(0.1, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--tilt", o->survey.tilt_deg,
+                  "lawnmower: sonar pitch on the vehicle, deg (negative = down)")
+      ->check(CLI::Range(-90.0, 90.0))
+      ->capture_default_str();
+  cmd->add_option("--field-seed", o->field_seed,
+                  "seabed-field: seed of the field's relief and objects (the same seed, the same "
+                  "field)")
       ->capture_default_str();
   cmd->add_option("--max-frames", o->max_frames, "Stop after this many frames")
       ->check(CLI::Range(0, kMaxSimFrames));
@@ -161,6 +215,12 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "Realistic beam: -3 dB width of each beam in bearing, deg; 0 = the bearing "
                   "spacing")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--visible-cell", o->visible_cell_m,
+                  "Ground truth: one seen surface point per cell of this side, m, in "
+                  "visible_points.ply; 0: none written (they take memory with the area seen: "
+                  "docs/simulator.md)")
+      ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str();
   cmd->add_option("--reflectivity", o->reflectivity, "Reflectivity of a loaded mesh, 0..1")
       ->capture_default_str();

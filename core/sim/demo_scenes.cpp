@@ -1,89 +1,27 @@
 #include "sim/demo_scenes.h"
 
-#include <vtkCubeSource.h>
-#include <vtkLineSource.h>
-#include <vtkPlaneSource.h>
-#include <vtkSphereSource.h>
-#include <vtkTransform.h>
-#include <vtkTransformPolyDataFilter.h>
-#include <vtkTubeFilter.h>
 #include <cmath>
 #include <numbers>
 
 #include "common/error.h"
-#include "geometry/internal/vtk_mesh.h"
+#include "sim/scene_shapes.h"
+#include "sim/seabed_field.h"
 
 namespace sonarcarve {
 namespace {
 
-// A capped cylinder between two points.
-Scene tube(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius, int sides,
-           float reflectivity) {
-  auto line = vtkSmartPointer<vtkLineSource>::New();
-  line->SetPoint1(a.data());
-  line->SetPoint2(b.data());
-  auto tube = vtkSmartPointer<vtkTubeFilter>::New();
-  tube->SetInputConnection(line->GetOutputPort());
-  tube->SetRadius(radius);
-  tube->SetNumberOfSides(sides);
-  tube->CappingOn();
-  tube->Update();
-  return sceneFromPolyData(tube->GetOutput(), reflectivity, "tube");
-}
-
-Scene sphere(const Eigen::Vector3d& centre, double radius, float reflectivity) {
-  auto s = vtkSmartPointer<vtkSphereSource>::New();
-  s->SetCenter(centre.data());
-  s->SetRadius(radius);
-  s->SetThetaResolution(64);
-  s->SetPhiResolution(32);
-  s->Update();
-  return sceneFromPolyData(s->GetOutput(), reflectivity, "sphere");
-}
-
-// A box of `size` (north, east, down extents) centred at `centre`, turned by `yaw_deg`.
-Scene box(const Eigen::Vector3d& centre, const Eigen::Vector3d& size, double yaw_deg,
-          float reflectivity) {
-  auto cube = vtkSmartPointer<vtkCubeSource>::New();
-  cube->SetXLength(size.x());
-  cube->SetYLength(size.y());
-  cube->SetZLength(size.z());
-  auto transform = vtkSmartPointer<vtkTransform>::New();
-  transform->Translate(centre.data());
-  transform->RotateZ(yaw_deg);
-  auto filter = vtkSmartPointer<vtkTransformPolyDataFilter>::New();
-  filter->SetInputConnection(cube->GetOutputPort());
-  filter->SetTransform(transform);
-  filter->Update();
-  return sceneFromPolyData(filter->GetOutput(), reflectivity, "box");
-}
-
-// A square seabed of side `size` centred under `centre`, sloping down towards north.
-Scene seabed(const Eigen::Vector3d& centre, double size, double slope_deg, int resolution,
-             float reflectivity) {
-  const double half = 0.5 * size;
-  const double drop = half * std::tan(slope_deg * std::numbers::pi / 180.0);
-  auto plane = vtkSmartPointer<vtkPlaneSource>::New();
-  plane->SetOrigin(centre.x() - half, centre.y() - half, centre.z() - drop);
-  plane->SetPoint1(centre.x() + half, centre.y() - half, centre.z() + drop);
-  plane->SetPoint2(centre.x() - half, centre.y() + half, centre.z() - drop);
-  plane->SetResolution(resolution, resolution);
-  plane->Update();
-  return sceneFromPolyData(plane->GetOutput(), reflectivity, "seabed");
-}
-
 Scene riser() {
   Scene scene;
   scene.name = "riser";
-  scene.append(seabed({0, 0, 20.0}, 30.0, 0.0, 1, 0.35f));
-  scene.append(tube({0, 0, 9.5}, {0, 0, 20.0}, 0.2, 48, 0.8f));
+  scene.append(seabedSquare({0, 0, 20.0}, 30.0, 0.0, 1, 0.35f));
+  scene.append(tubeShape({0, 0, 9.5}, {0, 0, 20.0}, 0.2, 48, 0.8f));
   for (double top : {10.4, 11.5, 12.6}) {
-    scene.append(tube({0, 0, top}, {0, 0, top + 0.8}, 0.45, 64, 0.9f));
+    scene.append(tubeShape({0, 0, top}, {0, 0, top + 0.8}, 0.45, 64, 0.9f));
   }
   // Tie-back cables from the riser at 14.5 m down to the seabed, towards the south-east and
   // south-west, so the inspecting vehicle (south of the riser) sees them at both sides.
   for (double east : {5.2, -5.2}) {
-    scene.append(tube({0, 0, 14.5}, {-3.0, east, 20.0}, 0.05, 16, 0.6f));
+    scene.append(tubeShape({0, 0, 14.5}, {-3.0, east, 20.0}, 0.05, 16, 0.6f));
   }
   scene.target = {Eigen::Vector3d(0, 0, 15.0), 9.5, 20.0, 20.0};
   return scene;
@@ -92,13 +30,13 @@ Scene riser() {
 Scene jacketNode() {
   Scene scene;
   scene.name = "jacket-node";
-  scene.append(tube({0, 0, 10.0}, {0, 0, 20.0}, 0.4, 48, 0.8f));
-  scene.append(tube({0, 0, 14.2}, {0, 0, 15.8}, 0.55, 48, 0.85f));
+  scene.append(tubeShape({0, 0, 10.0}, {0, 0, 20.0}, 0.4, 48, 0.8f));
+  scene.append(tubeShape({0, 0, 14.2}, {0, 0, 15.8}, 0.55, 48, 0.85f));
   const Eigen::Vector3d node(0, 0, 15.0);
-  scene.append(tube(node, {0, 5.0, 15.0}, 0.22, 32, 0.8f));     // horizontal, east
-  scene.append(tube(node, {0, -4.0, 11.5}, 0.22, 32, 0.8f));    // up to the west
-  scene.append(tube(node, {0, 3.5, 19.0}, 0.22, 32, 0.8f));     // down to the east
-  scene.append(tube(node, {3.0, -3.0, 16.5}, 0.22, 32, 0.8f));  // away, north-west
+  scene.append(tubeShape(node, {0, 5.0, 15.0}, 0.22, 32, 0.8f));     // horizontal, east
+  scene.append(tubeShape(node, {0, -4.0, 11.5}, 0.22, 32, 0.8f));    // up to the west
+  scene.append(tubeShape(node, {0, 3.5, 19.0}, 0.22, 32, 0.8f));     // down to the east
+  scene.append(tubeShape(node, {3.0, -3.0, 16.5}, 0.22, 32, 0.8f));  // away, north-west
   scene.target = {Eigen::Vector3d(0, 0, 15.0), 10.0, 20.0, 0.0};
   return scene;
 }
@@ -110,12 +48,12 @@ Scene seabedObjects() {
   const auto floor_at = [&](double north) {
     return 20.0 + north * std::tan(slope * std::numbers::pi / 180.0);
   };
-  scene.append(seabed({0, 0, 20.0}, 24.0, slope, 48, 0.3f));
-  scene.append(box({-2.0, -1.5, floor_at(-2.0) - 0.3}, {1.2, 0.8, 0.6}, 0.0, 0.9f));
-  scene.append(box({1.5, 2.0, floor_at(1.5) - 0.4}, {0.8, 0.8, 0.8}, 30.0, 0.9f));
+  scene.append(seabedSquare({0, 0, 20.0}, 24.0, slope, 48, 0.3f));
+  scene.append(boxShape({-2.0, -1.5, floor_at(-2.0) - 0.3}, {1.2, 0.8, 0.6}, 0.0, 0.9f));
+  scene.append(boxShape({1.5, 2.0, floor_at(1.5) - 0.4}, {0.8, 0.8, 0.8}, 30.0, 0.9f));
   scene.append(
-      tube({2.0, -3.0, floor_at(2.0) - 0.3}, {2.0, -1.0, floor_at(2.0) - 0.3}, 0.3, 32, 0.8f));
-  scene.append(sphere({-1.5, 2.5, floor_at(-1.5) - 0.5}, 0.5, 0.85f));
+      tubeShape({2.0, -3.0, floor_at(2.0) - 0.3}, {2.0, -1.0, floor_at(2.0) - 0.3}, 0.3, 32, 0.8f));
+  scene.append(sphereShape({-1.5, 2.5, floor_at(-1.5) - 0.5}, 0.5, 0.85f));
   scene.target = {Eigen::Vector3d(0, 0, 20.0), 19.0, 20.0, 20.0};
   return scene;
 }
@@ -128,27 +66,28 @@ Scene manifold() {
   Scene scene;
   scene.name = "manifold";
   const double floor = 20.0;
-  scene.append(seabed({0, 0, floor}, 24.0, 0.0, 48, 0.3f));
-  scene.append(box({0, 0, floor - 0.05}, {3.6, 2.8, 0.1}, 0.0, 0.6f));     // mud mat
-  scene.append(box({0, 0, floor - 0.6}, {2.4, 1.6, 1.0}, 0.0, 0.9f));      // manifold body
-  scene.append(box({0.9, 0, floor - 1.15}, {0.6, 1.2, 0.1}, 0.0, 0.85f));  // valve deck
-  scene.append(tube({-1.4, 0, floor - 1.25}, {1.4, 0, floor - 1.25}, 0.15, 32, 0.8f));  // header
+  scene.append(seabedSquare({0, 0, floor}, 24.0, 0.0, 48, 0.3f));
+  scene.append(boxShape({0, 0, floor - 0.05}, {3.6, 2.8, 0.1}, 0.0, 0.6f));     // mud mat
+  scene.append(boxShape({0, 0, floor - 0.6}, {2.4, 1.6, 1.0}, 0.0, 0.9f));      // manifold body
+  scene.append(boxShape({0.9, 0, floor - 1.15}, {0.6, 1.2, 0.1}, 0.0, 0.85f));  // valve deck
+  scene.append(
+      tubeShape({-1.4, 0, floor - 1.25}, {1.4, 0, floor - 1.25}, 0.15, 32, 0.8f));  // header
   for (const double east : {-0.5, 0.5}) {
     const double top = floor - 1.75;
-    scene.append(tube({0.9, east, floor - 1.2}, {0.9, east, top}, 0.06, 16, 0.8f));  // stem
-    scene.append(tube({0.9, east, top}, {0.9, east, top - 0.05}, 0.22, 32, 0.85f));  // wheel
+    scene.append(tubeShape({0.9, east, floor - 1.2}, {0.9, east, top}, 0.06, 16, 0.8f));  // stem
+    scene.append(tubeShape({0.9, east, top}, {0.9, east, top - 0.05}, 0.22, 32, 0.85f));  // wheel
   }
   for (const double east : {-1.0, 1.0}) {  // flowline spools leaving north and south
     for (const double north : {-1.0, 1.0}) {
-      scene.append(tube({north * 1.2, east * 0.5, floor - 0.25},
-                        {north * 4.5, east * 0.5, floor - 0.25}, 0.15, 32, 0.75f));
+      scene.append(tubeShape({north * 1.2, east * 0.5, floor - 0.25},
+                             {north * 4.5, east * 0.5, floor - 0.25}, 0.15, 32, 0.75f));
     }
   }
   // A jumper from the body's east face, up and over, down to the seabed 3 m away.
   const Eigen::Vector3d a(0, 0.8, floor - 0.5), b(0, 1.8, floor - 1.8), c(0, 3.0, floor - 1.8),
       d(0, 3.8, floor - 0.25);
   for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}}) {
-    scene.append(tube(from, to, 0.12, 24, 0.8f));
+    scene.append(tubeShape(from, to, 0.12, 24, 0.8f));
   }
   scene.target = {Eigen::Vector3d(0, 0, floor - 1.0), floor - 2.0, floor, floor};
   return scene;
@@ -157,7 +96,7 @@ Scene manifold() {
 }  // namespace
 
 std::vector<std::string> demoSceneNames() {
-  return {"riser", "jacket-node", "seabed-objects", "manifold"};
+  return {"riser", "jacket-node", "seabed-objects", "manifold", "seabed-field"};
 }
 
 bool isDemoScene(const std::string& name) {
@@ -170,7 +109,8 @@ bool isDemoScene(const std::string& name) {
 }
 
 std::string usualTrajectory(const std::string& scene) {
-  return scene == "seabed-objects" || scene == "manifold" ? "lawnmower" : "vertical";
+  return scene == "seabed-objects" || scene == "manifold" || scene == "seabed-field" ? "lawnmower"
+                                                                                     : "vertical";
 }
 
 Scene makeDemoScene(const std::string& name) {
@@ -186,8 +126,13 @@ Scene makeDemoScene(const std::string& name) {
   if (name == "manifold") {
     return manifold();
   }
+  if (name == "seabed-field") {
+    return SeabedField(SeabedFieldSpec{})
+        .area(Eigen::AlignedBox2d(Eigen::Vector2d(-20.0, -20.0), Eigen::Vector2d(19.9, 19.9)));
+  }
   throw Error("scene", name,
-              "unknown demo scene: expected riser, jacket-node, seabed-objects or manifold");
+              "unknown demo scene: expected riser, jacket-node, seabed-objects, manifold or "
+              "seabed-field");
 }
 
 }  // namespace sonarcarve

@@ -6,6 +6,9 @@
 //   manifold        a subsea template on a flat seabed: mud mat, manifold body with a valve
 //                   deck, header pipe, valve stems with hand wheels, flowline spools and a
 //                   jumper (large faces that look up, beside pipes)
+//   seabed-field    a seabed of any extent with objects, generated from a seed (sim/
+//                   seabed_field.h): as a scene, its tiles within 20 m of the origin; a
+//                   simulation surveys the field itself (SimulationRequest::field)
 #pragma once
 
 #include <string>
@@ -19,8 +22,8 @@ std::vector<std::string> demoSceneNames();
 bool isDemoScene(const std::string& name);
 /// Throws Error for an unknown name.
 Scene makeDemoScene(const std::string& name);
-/// The trajectory a scene is usually inspected with: lawnmower over seabed-objects
-/// and the manifold, vertical otherwise (a loaded mesh included).
+/// The trajectory a scene is usually inspected with: lawnmower over seabed-objects, the
+/// manifold and the seabed field, vertical otherwise (a loaded mesh included).
 std::string usualTrajectory(const std::string& scene);
 
 }  // namespace sonarcarve

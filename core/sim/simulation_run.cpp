@@ -9,14 +9,14 @@
 #include "io/mission_writer.h"
 #include "io/nav_csv.h"
 #include "io/yaml_fields.h"
-#include "sim/ray_caster.h"
+#include "sim/frame_renderer.h"
 #include "sim/visible_surface.h"
 
 namespace sonarcarve {
 namespace {
 
-std::string settingsYaml(const SimulationRequest& r, std::size_t frames,
-                         double traced_elevation_rad) {
+std::string settingsYaml(const SimulationRequest& r, const std::optional<SeabedFieldSpec>& f,
+                         std::size_t frames, double traced_elevation_rad) {
   std::ostringstream out;
   const auto& t = r.trajectory;
   out << "# Settings this mission was simulated with (sonarcarve-cli simulate).\n"
@@ -31,7 +31,20 @@ std::string settingsYaml(const SimulationRequest& r, std::size_t frames,
       << "  altitude_m: " << shortestNumber(t.altitude_m) << "\n"
       << "  line_spacing_m: " << shortestNumber(t.line_spacing_m) << "\n"
       << "  tilt_deg: " << shortestNumber(t.tilt_deg) << "\n"
-      << "imaging:\n"
+      << "  line_length_m: " << shortestNumber(t.line_length_m) << "\n"
+      << "  survey_width_m: " << shortestNumber(t.survey_width_m) << "\n"
+      << "  laps: " << shortestNumber(t.laps) << "\n"
+      << "  frames: " << t.frames << "\n";
+  if (f) {
+    out << "field:\n"
+        << "  seed: " << f->seed << "\n"
+        << "  depth_m: " << shortestNumber(f->depth_m) << "\n"
+        << "  relief_m: " << shortestNumber(f->relief_m) << "\n"
+        << "  tile_m: " << shortestNumber(f->tile_m) << "\n"
+        << "  grid_m: " << shortestNumber(f->grid_m) << "\n"
+        << "  max_objects_per_tile: " << f->max_objects_per_tile << "\n";
+  }
+  out << "imaging:\n"
       << "  elevation_step_deg: " << shortestDegrees(r.imaging.elevation_step_rad) << "\n"
       << "  rays_per_beam: " << r.imaging.rays_per_beam << "\n"
       << "  gain: " << shortestNumber(r.imaging.gain) << "\n"
@@ -43,6 +56,7 @@ std::string settingsYaml(const SimulationRequest& r, std::size_t frames,
       << "  horizontal_beam_width_deg: " << shortestDegrees(r.imaging.horizontal_beam_width_rad)
       << "\n"
       << "  visible_beam_level_db: " << shortestNumber(r.imaging.visible_beam_level_db) << "\n"
+      << "  visible_cell_m: " << shortestNumber(r.imaging.visible_cell_m) << "\n"
       << "navigation_error:\n"
       << "  position_sigma_m: " << shortestNumber(r.nav_error.position_sigma_m) << "\n"
       << "  attitude_sigma_deg: " << shortestNumber(r.nav_error.attitude_sigma_deg) << "\n"
@@ -59,6 +73,17 @@ std::string settingsYaml(const SimulationRequest& r, std::size_t frames,
   return out.str();
 }
 
+// The north-east box the sonar can reach from the first `frames` poses.
+Eigen::AlignedBox2d reachOf(const Trajectory& trajectory, std::size_t frames,
+                            const SonarModel& sonar) {
+  Eigen::AlignedBox2d box;
+  for (std::size_t i = 0; i < frames; ++i) {
+    box.extend(trajectory.T_world_sonar(i).translation().head<2>());
+  }
+  const double reach = sonar.range().maxRange();
+  return Eigen::AlignedBox2d(box.min().array() - reach, box.max().array() + reach);
+}
+
 }  // namespace
 
 SonarModel paperSonar(const std::string& id) {
@@ -67,23 +92,30 @@ SonarModel paperSonar(const std::string& id) {
 }
 
 SimulationResult runSimulation(const SimulationRequest& request, Progress& progress,
-                               ThreadPool& pool) {
-  const Trajectory trajectory = makeTrajectory(request.trajectory, request.scene.target);
+                               ThreadPool& pool, const std::optional<SeabedFieldSpec>& field_spec) {
+  const std::optional<SeabedField> field =
+      field_spec ? std::optional<SeabedField>(SeabedField(*field_spec)) : std::nullopt;
+  const Trajectory trajectory =
+      makeTrajectory(request.trajectory, field ? field->target() : request.scene.target);
   std::size_t frames = trajectory.poses.size();
   if (request.max_frames && *request.max_frames >= 0) {
     frames = std::min(frames, static_cast<std::size_t>(*request.max_frames));
   }
-  const RayCaster caster(request.scene);
-  const SonarSimulator simulator(caster, request.sonar, request.imaging, pool);
-  VisibleSurface visible;
+  FrameRenderer renderer = field
+                               ? FrameRenderer(*field, request.sonar, request.imaging, pool)
+                               : FrameRenderer(request.scene, request.sonar, request.imaging, pool);
+  const std::string scene_name = field ? std::string("seabed-field") : request.scene.name;
+  const bool keep_visible = request.imaging.visible_cell_m > 0.0;
+  VisibleSurface visible(keep_visible ? request.imaging.visible_cell_m : 0.01);
+  const HitSink seen = [&](const Eigen::Vector3f& p) { visible.add(p); };
   // A clipped beam images nothing outside the aperture: the mission says so, for carving.
   const SonarModel mission_sonar = request.imaging.beam == SimulatedBeam::Clipped
                                        ? request.sonar.withElevationBeam(ElevationBeam::Clipped)
                                        : request.sonar;
-  MissionWriter writer(request.output,
-                       request.scene.name + (request.empty_water ? " (empty water)" : "") + " / " +
-                           request.trajectory.kind,
-                       mission_sonar, trajectory.mounting);
+  MissionWriter writer(
+      request.output,
+      scene_name + (request.empty_water ? " (empty water)" : "") + " / " + request.trajectory.kind,
+      mission_sonar, trajectory.mounting);
   SimulationResult result;
   for (std::size_t i = 0; i < frames; ++i) {
     if (progress.cancelled()) {
@@ -95,8 +127,7 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
     if (request.empty_water) {
       frame.image = cv::Mat(request.sonar.rows(), request.sonar.cols(), CV_32F, cv::Scalar(0.0f));
     } else {
-      frame.image = simulator.render(trajectory.T_world_sonar(i),
-                                     [&](const Eigen::Vector3f& p) { visible.add(p); });
+      frame.image = renderer.render(trajectory.T_world_sonar(i), keep_visible ? seen : HitSink{});
     }
     addNoise(frame.image, request.noise, request.sonar, i);
     cv::min(frame.image, 65535.0f, frame.image);
@@ -117,13 +148,18 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   }
   writer.finish(NavTrack(withNavigationError(truth, request.nav_error)));
   writeFileAtomically(request.output / "ground_truth_poses.csv", navCsvText(NavTrack(truth)));
-  writeScenePly(request.scene, request.output / "ground_truth.ply");
-  if (!request.empty_water) {
+  const Scene ground_truth =
+      field ? field->area(reachOf(trajectory, written, request.sonar)) : Scene{};
+  writeScenePly(field ? ground_truth : request.scene, request.output / "ground_truth.ply");
+  if (!request.empty_water && keep_visible) {
     writePointsPly(visible.points(), request.output / "visible_points.ply");
   }
   writeFileAtomically(request.output / "simulation.yaml",
-                      settingsYaml(request, written, simulator.tracedElevation()));
+                      settingsYaml(request, field_spec, written, renderer.tracedElevation()));
   result.visible_points = visible.size();
+  result.most_triangles_traced = renderer.mostTriangles();
+  result.ground_truth_triangles =
+      field ? ground_truth.triangles.size() : request.scene.triangles.size();
   return result;
 }
 

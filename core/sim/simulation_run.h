@@ -5,7 +5,10 @@
 //   ground_truth_poses.csv    the true vehicle poses (navigation CSV format)
 //   visible_points.ply        the surface points the sonar saw (1 cm cells)
 //   simulation.yaml           scene, trajectory, imaging, noise and navigation-error settings
-// Cancelling through Progress stops between frames and still writes a valid, shorter mission.
+// Over a seabed field (`field` given, sim/seabed_field.h, in place of the request's scene) only the
+// tiles near the sonar are traced (sim/frame_renderer.h) and the ground truth is the field's tiles
+// under the track. Cancelling through Progress stops between frames and still writes a valid,
+// shorter mission.
 #pragma once
 
 #include <filesystem>
@@ -16,6 +19,7 @@
 #include "common/thread_pool.h"
 #include "geometry/scene.h"
 #include "sim/noise.h"
+#include "sim/seabed_field.h"
 #include "sim/sonar_simulator.h"
 #include "sim/trajectory.h"
 #include "sonar/sonar_model.h"
@@ -38,14 +42,18 @@ struct SimulationRequest {
 struct SimulationResult {
   std::size_t frames_written = 0;
   std::size_t visible_points = 0;
+  std::size_t most_triangles_traced = 0;  ///< the most scene triangles held at once
+  std::size_t ground_truth_triangles = 0;
   bool cancelled = false;
 };
 
 /// The seed paper's sonar: 2 cm range bins to 10 m, 130 degrees in 650 beams, 20 degrees.
 SonarModel paperSonar(const std::string& id = "sim-sonar");
 
-/// Renders each frame in parallel on `pool`.
+/// Renders each frame in parallel on `pool`. With `field`, surveys that seabed field instead
+/// of the request's scene (whose name and target are then unused).
 SimulationResult runSimulation(const SimulationRequest& request, Progress& progress,
-                               ThreadPool& pool);
+                               ThreadPool& pool,
+                               const std::optional<SeabedFieldSpec>& field = std::nullopt);
 
 }  // namespace sonarcarve

@@ -64,6 +64,10 @@ struct ImagingSettings {
   /// Hits reported as seen (HitSink) lie inside the elevation main lobe where its power is at
   /// least this level (dB, < 0): -3 dB = |theta| <= aperture/2, where the engines back-project.
   double visible_beam_level_db = -3.0;
+  /// The seen points are thinned to one per cell of this side (sim/visible_surface.h); 0: none
+  /// kept. They grow with the area seen: at 1 cm, about 0.6 MB of memory per square metre of
+  /// seabed a long survey sees (docs/simulator.md, "The seabed field").
+  double visible_cell_m = 0.01;
 };
 
 /// Called with each surface point a ray hit inside the sonar's window (world frame), when the

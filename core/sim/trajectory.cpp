@@ -58,10 +58,16 @@ Trajectory orbit(const TrajectorySpec& spec, const InspectionTarget& target) {
           ? std::min(target.bottom_down_m, target.seabed_down_m - spec.seabed_clearance_m)
           : target.bottom_down_m;
   const double circumference = 2.0 * std::numbers::pi * spec.standoff_m;
-  const int frames = std::max(2, static_cast<int>(std::round(circumference / spec.step_m)));
+  // The last frame closes the last lap; with `frames` set, as many laps as those frames make.
+  const int frames =
+      spec.frames > 0
+          ? spec.frames
+          : std::max(2, static_cast<int>(std::round(spec.laps * circumference / spec.step_m)));
+  const double laps =
+      spec.frames > 0 ? std::max(1, frames - 1) * spec.step_m / circumference : spec.laps;
   for (int i = 0; i < frames; ++i) {
-    const double u = static_cast<double>(i) / (frames - 1);
-    const double angle = 2.0 * std::numbers::pi * u;  // position angle around the axis
+    const double u = frames > 1 ? static_cast<double>(i) / (frames - 1) : 0.0;
+    const double angle = 2.0 * std::numbers::pi * laps * u;  // position angle around the axis
     const Eigen::Vector3d sonar(target.axis_point_m.x() - spec.standoff_m * std::cos(angle),
                                 target.axis_point_m.y() - spec.standoff_m * std::sin(angle),
                                 top + u * (bottom - top));
@@ -76,15 +82,20 @@ Trajectory lawnmower(const TrajectorySpec& spec, const InspectionTarget& target)
     throw Error("trajectory", "lawnmower", "the target has no seabed to survey");
   }
   Trajectory traj{{}, defaultMounting(degToRad(spec.tilt_deg))};
-  const double half = 5.0;  // survey a 10 m x 10 m square around the target
+  const double half = 0.5 * spec.line_length_m;  // the lines' square: survey_width_m wide
   const double depth = target.seabed_down_m - spec.altitude_m;
-  const int lines = static_cast<int>(std::floor(2.0 * half / spec.line_spacing_m)) + 1;
-  const int per_line = static_cast<int>(std::floor(2.0 * half / spec.step_m)) + 1;
+  const int per_line = static_cast<int>(std::floor(spec.line_length_m / spec.step_m + 1e-9)) + 1;
+  const int lines =
+      spec.frames > 0 ? (spec.frames + per_line - 1) / per_line
+                      : static_cast<int>(std::floor(spec.survey_width_m / spec.line_spacing_m)) + 1;
+  const std::size_t frames = spec.frames > 0 ? static_cast<std::size_t>(spec.frames)
+                                             : static_cast<std::size_t>(lines) * per_line;
   double time = spec.start_time_s;
   for (int l = 0; l < lines; ++l) {
     const bool north = l % 2 == 0;
-    const double east = target.axis_point_m.y() - half + l * spec.line_spacing_m;
-    for (int i = 0; i < per_line; ++i) {
+    const double east =
+        target.axis_point_m.y() - 0.5 * spec.survey_width_m + l * spec.line_spacing_m;
+    for (int i = 0; i < per_line && traj.poses.size() < frames; ++i) {
       // The sonar looks ahead, so start each line that far behind the square.
       const double along = -half - 3.0 + i * spec.step_m;
       const double northing = target.axis_point_m.x() + (north ? along : -along);
@@ -102,6 +113,12 @@ Trajectory lawnmower(const TrajectorySpec& spec, const InspectionTarget& target)
 Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& target) {
   if (!(spec.step_m > 0.0) || !(spec.speed_mps > 0.0) || !(spec.standoff_m > 0.0)) {
     throw Error("trajectory", spec.kind, "expected positive step, speed and standoff");
+  }
+  if (!(spec.line_length_m > 0.0) || !(spec.line_spacing_m > 0.0) ||
+      !(spec.survey_width_m >= 0.0) || !(spec.laps > 0.0) || spec.frames < 0) {
+    throw Error("trajectory", spec.kind,
+                "expected positive line length, line spacing and laps, and no negative survey "
+                "width or frames");
   }
   if (spec.kind == "vertical") {
     return vertical(spec, target);

@@ -4,9 +4,12 @@
 //              `standoff_m`, moved down in `step_m` steps over the target's depth span,
 //              down to `seabed_clearance_m` above the seabed
 //   orbit      a descending circle of radius `standoff_m` around the axis, sonar facing in,
-//              one turn over the depth span, `step_m` apart along the circle
-//   lawnmower  parallel north-south lines `line_spacing_m` apart at `altitude_m` above the
+//              `laps` turns over the depth span, `step_m` apart along the circle
+//   lawnmower  parallel north-south lines `line_length_m` long and `line_spacing_m` apart,
+//              from the west of a `survey_width_m` square, at `altitude_m` above the
 //              seabed, sonar pitched down `tilt_deg`, `step_m` apart along the lines
+// With `frames` set, orbit and lawnmower go on for that many frames: more laps, or more lines
+// to the east (a long survey over a seabed field, sim/seabed_field.h).
 //   CSV        vehicle poses from a navigation CSV (docs/formats.md), one frame per row
 #pragma once
 
@@ -29,6 +32,11 @@ struct TrajectorySpec {
   double altitude_m = 3.0;        ///< lawnmower: height above the seabed
   double line_spacing_m = 2.0;    ///< lawnmower: distance between lines
   double tilt_deg = -30.0;        ///< lawnmower: sonar pitch on the vehicle (negative = down)
+  double line_length_m = 10.0;    ///< lawnmower: length of a line
+  double survey_width_m = 10.0;   ///< lawnmower: east-west extent of the lines, without `frames`
+  double laps = 1.0;              ///< orbit: turns around the axis, without `frames`
+  /// orbit and lawnmower: the number of frames (0: what `laps` or the survey's square make).
+  int frames = 0;
   /// vertical and orbit: lowest sonar depth above the seabed. 1.8 m keeps the seabed out of
   /// a 10 m, 20 degree fan: seen at grazing incidence from a vertical track, a flat seabed
   /// cannot be localised in elevation (it leaves a slab of ~0.3 m uncarved).
