@@ -39,7 +39,7 @@ def main(argv):
                 color=colour, label=f"{label}: peak of the run (occlusion, mesh)")
     ax.set_xlabel("frames carved")
     ax.set_ylabel("memory, GB (dotted: anonymous)")
-    ax.set_title("Reconstruction memory against mission length (today's engine)")
+    ax.set_title("Reconstruction memory against mission length")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
