@@ -65,6 +65,9 @@ class Carver {
   /// neighbours is not occupied (voxels buried inside occupied space are behind one).
   virtual void forEachSurfaceCandidate(const VoxelVisitor& visit) const = 0;
   virtual CarverStats stats() const = 0;
+  /// stats().memory_bytes without counting the voxels: engines answer it at once, so that a
+  /// run can check its memory budget after every frame (pipeline/memory_budget.h).
+  virtual std::size_t memoryBytes() const { return stats().memory_bytes; }
   /// The map as blocks with change stamps, for viewers' incremental updates and the OctoMap
   /// export; nullptr for engines that do not keep one.
   virtual const VoxelMap* blockMap() const { return nullptr; }

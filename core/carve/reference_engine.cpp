@@ -42,6 +42,7 @@ class ReferenceEngine final : public Carver {
   CarverStats stats() const override {
     return {carver_.occupiedVoxels().size(), carver_.memoryBytes()};
   }
+  std::size_t memoryBytes() const override { return carver_.memoryBytes(); }
 
  private:
   ReferenceCarver carver_;

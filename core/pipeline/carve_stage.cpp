@@ -8,6 +8,7 @@
 #include "carve/map_file.h"
 #include "common/error.h"
 #include "occlusion/occlusion_resolver.h"
+#include "pipeline/size_limits.h"
 
 namespace sonarcarve {
 namespace {
@@ -44,7 +45,8 @@ Eigen::AlignedBox3d CarveStage::mapBounds(const std::vector<PosedFrame>& frames)
 CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
                                  const Eigen::AlignedBox3d& bounds, const DenoisedFrames& source,
                                  Progress& progress, MapUpdateSink* updates,
-                                 const std::function<void(const FrameProblem&)>& skip) const {
+                                 const std::function<void(const FrameProblem&)>& skip,
+                                 const CarvedFrameCheck& check) const {
   CarveStageResult result;
   result.carve = params_.carve;
   result.carve.region = bounds;
@@ -92,16 +94,19 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
                          stamp);
     }
     progress.report("carve", n + 1, frames.size());
+    if (check) {
+      check({"carving", n + 1, frames.size(), static_cast<double>(result.carver->memoryBytes())});
+    }
   }
   if (params_.occlusion_aware && !result.cancelled && !result.used.empty() &&
       result.carver->supportsVisibilityLimit()) {
-    refine(result, source, progress, updates);
+    refine(result, source, progress, updates, check);
   }
   return result;
 }
 
 void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source, Progress& progress,
-                        MapUpdateSink* updates) const {
+                        MapUpdateSink* updates, const CarvedFrameCheck& check) const {
   const VoxelValues candidates = surfaceCandidates(*result.carver);
   const OcclusionResolver first_surface(candidates.voxels, candidates.values, sonar_, result.carve);
   auto refined = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
@@ -127,6 +132,11 @@ void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source, 
                        limit);
     result.carve_ms[n] += msSince(t0);
     progress.report("refine", n + 1, result.used.size());
+    if (check) {
+      check({"occlusion-aware carving", n + 1, result.used.size(),
+             static_cast<double>(result.carver->memoryBytes() + refined->memoryBytes()) +
+                 occlusionStageBytes(candidates.voxels.size())});
+    }
   }
   result.cancelled = progress.cancelled();
   if (updates != nullptr && refined->blockMap() != nullptr) {

@@ -3,7 +3,9 @@
 // viewers as it grows; optionally a second, occlusion-aware pass.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "carve/carver.h"
@@ -46,6 +48,18 @@ struct CarveStageResult {
   bool cancelled = false;
 };
 
+/// Where the carving stage is after a frame, and what its maps hold, for a check of the run's
+/// memory budget that throws to stop the run between frames (pipeline/memory_budget.h).
+struct CarvedSoFar {
+  std::string_view pass;  ///< "carving", or "occlusion-aware carving" (the second pass)
+  std::size_t frame = 0;  ///< frames of the pass done, skipped ones included
+  std::size_t frames = 0;
+  /// The maps' memory (Carver::memoryBytes); in the second pass also the first pass's map
+  /// and surface it carves against.
+  double map_bytes = 0.0;
+};
+using CarvedFrameCheck = std::function<void(const CarvedSoFar&)>;
+
 class CarveStage {
  public:
   CarveStage(const SonarModel& sonar, CarveStageParams params, ThreadPool& pool);
@@ -56,14 +70,16 @@ class CarveStage {
 
   /// Carves `frames` read through `source` into a map covering `bounds` (mapBounds(frames)).
   /// A frame that fails to load is passed to `skip`; `updates`, when set, receives each
-  /// carved frame and the map's changes. Cancellable between frames.
+  /// carved frame and the map's changes; `check`, when set, is called after each frame and
+  /// may throw to stop the run. Cancellable between frames.
   CarveStageResult run(const std::vector<PosedFrame>& frames, const Eigen::AlignedBox3d& bounds,
                        const DenoisedFrames& source, Progress& progress, MapUpdateSink* updates,
-                       const std::function<void(const FrameProblem&)>& skip) const;
+                       const std::function<void(const FrameProblem&)>& skip,
+                       const CarvedFrameCheck& check = {}) const;
 
  private:
   void refine(CarveStageResult& result, const DenoisedFrames& source, Progress& progress,
-              MapUpdateSink* updates) const;
+              MapUpdateSink* updates, const CarvedFrameCheck& check) const;
 
   const SonarModel& sonar_;
   CarveStageParams params_;

@@ -286,6 +286,21 @@ std::vector<ParamSpec> makeSchema() {
        .gui = {.group = "Carving", .label = "Occlusion-aware carving", .advanced = true},
        .access = field([](auto& p) -> auto& { return p.occlusion_aware_carving; }),
        .applies = usesFastEngine},
+      {.key = "memory_budget_mb",
+       .unit = "MB",
+       .range = kNonNegative,
+       .help = "memory the run may hold, in MB of 2^20 bytes: past it the run stops between "
+               "frames with an error naming the figures (nothing is evicted yet); 0 = 80 % of "
+               "the memory available when the run starts",
+       .flag = "--memory-budget",
+       .gui = {.group = "Carving",
+               .label = "Memory budget",
+               .advanced = true,
+               .max = 1048576,
+               .step = 256,
+               .suffix = " MB",
+               .min_text = "80 % of the available"},
+       .access = field([](auto& p) -> auto& { return p.memory_budget_mb; })},
 
       // Navigation.
       {.key = "pose_refinement.enabled",

@@ -7,10 +7,12 @@
 #include <optional>
 
 #include "carve/carving_geometry.h"
+#include "common/available_memory.h"
 #include "common/error.h"
 #include "denoise/noise_model.h"
 #include "pipeline/carve_stage.h"
 #include "pipeline/frame_stage.h"
+#include "pipeline/memory_budget.h"
 #include "pipeline/size_limits.h"
 #include "pipeline/surface_stage.h"
 
@@ -69,7 +71,10 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
                          params_.pose_refinement, earlier_map_,  carve_frames_};
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
-  requireBoundedSizes(bounds, sonar_, params_.carve, pool_.size());
+  const MemoryWatch memory(memoryBudget(params_.memory_budget_mb, availableMemory()));
+  const MemoryEstimate buffers =
+      requireBoundedSizes(bounds, sonar_, params_.carve, pool_.size(), memory.budget());
+  const std::string threads = " of " + std::to_string(pool_.size()) + " threads";
   NoiseChoice noise;
   try {
     noise = chooseNoiseModel(mission_, posed, params_.detector, params_.noise_model, noise_model_,
@@ -100,8 +105,19 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   if (observer) {
     updates.emplace(*observer, update_every);
   }
-  CarveStageResult carved =
-      carving.run(posed, bounds, frames, progress, updates ? &*updates : nullptr, skip);
+  const auto check_frame = [&](const CarvedSoFar& at) {
+    std::vector<MemoryPart> parts{{"map", at.map_bytes},
+                                  {"frame buffers" + threads, buffers.frames}};
+    std::string when =
+        "after frame " + std::to_string(at.frame) + " of " + std::to_string(at.frames);
+    if (at.pass != "carving") {
+      parts.push_back({"z-buffers" + threads, buffers.occlusion});
+      when += " of " + std::string(at.pass);
+    }
+    memory.require(parts, when);
+  };
+  CarveStageResult carved = carving.run(posed, bounds, frames, progress,
+                                        updates ? &*updates : nullptr, skip, check_frame);
   result.cancelled = carved.cancelled;
   result.frames_used = carved.used.size();
   result.refinement = std::move(carved.refinement);
@@ -121,12 +137,22 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
       carved.carve_ms.empty() ? 0.0 : carved.carve_ms[carved.carve_ms.size() / 2];
 
   // Occlusion resolution and the surface.
+  const auto map_bytes = static_cast<double>(result.map_bytes);
+  memory.require({{"map", map_bytes},
+                  {"occlusion resolution", occlusionStageBytes(result.occupied_voxels)},
+                  {"z-buffers" + threads, buffers.occlusion}},
+                 "before occlusion resolution");
   SurfaceStageResult surface = resolveSurface(*result.carver, carved.used, sonar_, carved.carve,
                                               params_.min_views, pool_, progress);
   result.cancelled = result.cancelled || surface.cancelled;
   result.occlusion_ms_per_frame = surface.ms_per_frame;
   result.surface = std::move(surface.surface);
   if (params_.mesh_enabled && !result.cancelled) {
+    memory.require(
+        {{"map", map_bytes},
+         {"surface points", static_cast<double>(result.surface.size() * sizeof(SurfacePoint))},
+         {"mesh", meshStageBytes(result.surface.size())}},
+        "before the mesh");
     result.mesh = meshStage(result.surface, params_.mesh, carved.carve.voxel_size_m, progress);
   }
   result.total_s =

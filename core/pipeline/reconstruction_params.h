@@ -55,6 +55,9 @@ struct ReconstructionParams {
   bool occlusion_aware_carving = false;
   /// Fast engine: each frame aligned to the map carved so far before it carves (issue 15).
   PoseRefinementParams pose_refinement;
+  /// What the run may hold in memory, MiB (2^20 bytes); 0 = a share of the memory available
+  /// when the run starts (pipeline/memory_budget.h). Past it the run stops with an Error.
+  std::uint64_t memory_budget_mb = 0;
 
   /// A surface voxel must be the first return in this many views: ghosts of the elevation
   /// ambiguity are first returns in fewer views than a real surface, seen from every view

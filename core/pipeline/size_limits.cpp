@@ -16,6 +16,10 @@ constexpr double kBlockTableBytes = 9.0;            // state, slot and stamp of 
 constexpr double kBlockContentBytes = 512.0 * 4.0;  // a Mixed block: 8^3 floats
 constexpr double kSurfaceLayers = 2.0;              // blocks a surface straddles
 constexpr double kOcclusionCellBytes = 8.0;
+constexpr double kOcclusionBytesPerVoxel = 16.0 + 24.0 + 20.0;
+// The occupancy mesh's peak was 1.6 kB a surface point on the noise-free riser (12,909 points,
+// 20 MB) and 1.3 kB on a seabed (36,109 points, 45 MB): about twice that.
+constexpr double kMeshBytesPerSurfacePoint = 3000.0;
 constexpr double kMiB = 1024.0 * 1024.0;
 
 double elevationSteps(const SonarModel& sonar, const CarveParams& carve) {
@@ -46,8 +50,8 @@ MemoryEstimate estimateMemory(const Eigen::AlignedBox3d& bounds, const SonarMode
 }
 
 void requireMemory(const MemoryEstimate& e, const CarveParams& carve,
-                   const std::optional<AvailableMemory>& available) {
-  if (!available || e.total() <= static_cast<double>(available->bytes)) {
+                   const std::optional<MemoryBudget>& budget) {
+  if (!budget || e.total() <= static_cast<double>(budget->bytes)) {
     return;
   }
   std::string place = "voxel_size_m";
@@ -63,13 +67,15 @@ void requireMemory(const MemoryEstimate& e, const CarveParams& carve,
   text << "the reconstruction needs at least " << mib(e.total()) << " (map " << mib(e.map)
        << " at a voxel size of " << carve.voxel_size_m << " m, frames " << mib(e.frames)
        << ", occlusion buffers " << mib(e.occlusion) << " at an elevation step of "
-       << radToDeg(carve.elevation_step_rad) << " degrees) but " << mib(available->bytes)
-       << " are available (" << available->source << "): " << advice;
+       << radToDeg(carve.elevation_step_rad) << " degrees) but the memory budget is "
+       << memoryFigure(static_cast<double>(budget->bytes)) << " (" << budget->origin
+       << "): " << advice << ", or set memory_budget_mb";
   throw Error("parameters", place, text.str());
 }
 
-void requireBoundedSizes(const Eigen::AlignedBox3d& bounds, const SonarModel& sonar,
-                         const CarveParams& carve, unsigned threads) {
+MemoryEstimate requireBoundedSizes(const Eigen::AlignedBox3d& bounds, const SonarModel& sonar,
+                                   const CarveParams& carve, unsigned threads,
+                                   const std::optional<MemoryBudget>& budget) {
   const Eigen::Vector3d extent_m = bounds.sizes();
   const Eigen::Vector3d per_axis = (extent_m / carve.voxel_size_m).array().ceil() + 1.0;
   const double voxels = per_axis.prod();
@@ -90,7 +96,17 @@ void requireBoundedSizes(const Eigen::AlignedBox3d& bounds, const SonarModel& so
          << kMaxFramePixels << "; use a larger step";
     throw Error("parameters", "elevation_step_deg", text.str());
   }
-  requireMemory(estimateMemory(bounds, sonar, carve, threads), carve, availableMemory());
+  const MemoryEstimate estimate = estimateMemory(bounds, sonar, carve, threads);
+  requireMemory(estimate, carve, budget);
+  return estimate;
+}
+
+double occlusionStageBytes(std::size_t occupied_voxels) {
+  return static_cast<double>(occupied_voxels) * kOcclusionBytesPerVoxel;
+}
+
+double meshStageBytes(std::size_t surface_points) {
+  return static_cast<double>(surface_points) * kMeshBytesPerSurfacePoint;
 }
 
 }  // namespace sonarcarve

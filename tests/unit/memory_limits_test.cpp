@@ -1,6 +1,6 @@
 // Memory-based limits (docs/reliability.md, "Limits"): the memory available is read from the
-// kernel, a container's limit or the user's cap, and a reconstruction that needs more is
-// refused before allocation, naming the parameter that takes most of it.
+// kernel, a container's limit or the user's cap, and a reconstruction that needs more than its
+// budget (memory_budget.h) is refused before allocation, naming the parameter that takes most.
 #include <gtest/gtest.h>
 
 #include "common/available_memory.h"
@@ -54,18 +54,20 @@ TEST(MemoryLimits, RefusedNamingTheParameterThatTakesMost) {
   e.map = 900.0 * kMiB;
   e.frames = 10.0 * kMiB;
   e.occlusion = 20.0 * kMiB;
-  const AvailableMemory little{500 * kMiB, "SONARCARVE_MEMORY_LIMIT_MB"};
+  const MemoryBudget little{500 * kMiB, "80 % of 625 MiB available, SONARCARVE_MEMORY_LIMIT_MB"};
   test::expectError(
       [&] { requireMemory(e, carve, little); },
       {"parameters: voxel_size_m: the reconstruction needs at least 930 MiB", "map 900 MiB",
-       "but 500 MiB are available (SONARCARVE_MEMORY_LIMIT_MB)", "use a larger voxel size"});
+       "but the memory budget is 500 MiB (80 % of 625 MiB available, "
+       "SONARCARVE_MEMORY_LIMIT_MB)",
+       "use a larger voxel size or a smaller region, or set memory_budget_mb"});
   e.occlusion = 2000.0 * kMiB;
   test::expectError([&] { requireMemory(e, carve, little); },
                     {"parameters: elevation_step_deg:", "use a larger elevation step"});
   e.frames = 3000.0 * kMiB;
   test::expectError([&] { requireMemory(e, carve, little); }, {"parameters: frames:"});
   EXPECT_NO_THROW(requireMemory(e, carve, std::nullopt));
-  EXPECT_NO_THROW(requireMemory(e, carve, AvailableMemory{6000 * kMiB, "test"}));
+  EXPECT_NO_THROW(requireMemory(e, carve, MemoryBudget{6000 * kMiB, "test"}));
 }
 
 }  // namespace

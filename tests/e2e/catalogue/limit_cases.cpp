@@ -1,6 +1,7 @@
 // Class "limits before allocation": sizes read from inputs or parameters are checked against
 // the documented limits (core/common/input_limits.h) before anything is allocated from them.
 #include "e2e/catalogue/catalogue.h"
+#include "support/cli_runner.h"
 
 namespace sonarcarve::test {
 namespace {
@@ -126,10 +127,40 @@ std::vector<CatalogueCase> limitCases() {
       {.name = "ReconstructOverTheMemoryAvailable",
        .prepare = [](const Workspace&) { return std::string("reconstruct mission --out out"); },
        .message = {"parameters: voxel_size_m: the reconstruction needs at least",
-                   "but 1 MiB are available (SONARCARVE_MEMORY_LIMIT_MB)",
-                   "use a larger voxel size or a smaller region"},
+                   "but the memory budget is 0.8 MiB (80 % of 1.0 MiB available, "
+                   "SONARCARVE_MEMORY_LIMIT_MB)",
+                   "use a larger voxel size or a smaller region, or set memory_budget_mb"},
        .absent = {"out/surface_points.ply", "out/report.json", "out/manifest.json"},
        .wrapper = "env SONARCARVE_MEMORY_LIMIT_MB=1"},
+      // The memory budget (memory_budget_mb): the estimate before the map exists, then what
+      // the run holds after each frame; an earlier run's files stay as they were.
+      {.name = "ReconstructOverItsMemoryBudgetBeforeCarving",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("reconstruct mission --memory-budget 1 --out out");
+           },
+       .message = {"parameters: voxel_size_m: the reconstruction needs at least",
+                   "but the memory budget is 1.0 MiB (memory_budget_mb)"},
+       .absent = {"out/surface_points.ply", "out/report.json", "out/manifest.json"}},
+      {.name = "ReconstructOverItsMemoryBudgetBetweenFrames",
+       .prepare =
+           [](const Workspace& ws) {
+             // A seabed seen from a lawnmower: its map outgrows the estimate (21 MiB) at once.
+             const RunResult made =
+                 runShell("cd " + quoted(ws.root()) + " && '" + SONARCARVE_CLI +
+                          "' simulate --scene seabed-objects --trajectory lawnmower --noise none "
+                          "--beam clipped --max-frames 8 --out seabed 2>&1");
+             EXPECT_EQ(made.exit_code, 0) << made.output;
+             writePrevious(ws / "out/report.json");
+             return std::string(
+                 "reconstruct seabed --voxel-size 0.03 --memory-budget 30 --out out");
+           },
+       .message = {"parameters: memory_budget_mb: the run holds", "after frame 1 of 8 (map ",
+                   "over the memory budget of 30 MiB (memory_budget_mb): set memory_budget_mb, "
+                   "a region of interest (region), a larger voxel size (voxel_size_m), or shard "
+                   "the mission (docs/scaling.md)"},
+       .absent = {"out/surface_points.ply", "out/map.bt", "out/manifest.json"},
+       .intact = {"out/report.json"}},
       {.name = "SceneMeshOverTheMemoryAvailable",
        .prepare =
            [](const Workspace& ws) {
