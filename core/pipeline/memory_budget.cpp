@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "common/resident_memory.h"
+#include "common/process_memory.h"
 
 namespace sonarcarve {
 namespace {
@@ -57,7 +57,11 @@ std::string memoryFigure(double bytes) {
 
 MemoryWatch::MemoryWatch(std::optional<MemoryBudget> budget, ResidentMemory resident)
     : budget_(std::move(budget)),
-      resident_(resident ? std::move(resident) : ResidentMemory(residentMemory)),
+      resident_(resident ? std::move(resident)
+                         : ResidentMemory([]() -> std::optional<std::uint64_t> {
+                             const auto memory = processMemory();
+                             return memory ? std::optional(memory->resident_bytes) : std::nullopt;
+                           })),
       resident_at_start_(budget_ ? resident_() : std::nullopt) {}
 
 void MemoryWatch::require(const std::vector<MemoryPart>& parts, const std::string& when) const {

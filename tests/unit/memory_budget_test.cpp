@@ -6,7 +6,6 @@
 #include <cstdlib>
 
 #include "common/error.h"
-#include "common/resident_memory.h"
 #include "pipeline/memory_budget.h"
 #include "pipeline/reconstruction.h"
 #include "pipeline/size_limits.h"
@@ -39,12 +38,6 @@ TEST(MemoryBudget, FiguresInMiBAndGiB) {
   EXPECT_EQ(memoryFigure(0.8 * kMiB), "0.8 MiB");
   EXPECT_EQ(memoryFigure(812.4 * kMiB), "812 MiB");
   EXPECT_EQ(memoryFigure(3.25 * 1024 * kMiB), "3.2 GiB");
-}
-
-TEST(ResidentMemory, ReadFromProcStatus) {
-  EXPECT_EQ(residentMemoryFrom("Name: x\nVmHWM:  900 kB\nVmRSS:  812 kB\n"), 812u * 1024);
-  EXPECT_FALSE(residentMemoryFrom("Name: x\n"));
-  EXPECT_TRUE(residentMemory());  // /proc/self/status exists on Linux
 }
 
 TEST(MemoryWatch, StopsWhenWhatTheRunCountsOrTheProcessGrowthIsOverTheBudget) {
