@@ -49,8 +49,8 @@ class MemoryWatch {
  public:
   using ResidentMemory = std::function<std::optional<std::uint64_t>()>;
 
-  /// Reads the resident memory now (through `resident`, the VmRSS of processMemory() by default) as the
-  /// run's starting point.
+  /// Reads the resident memory now (through `resident`, the VmRSS of processMemory() by default) as
+  /// the run's starting point.
   explicit MemoryWatch(std::optional<MemoryBudget> budget, ResidentMemory resident = {});
 
   const std::optional<MemoryBudget>& budget() const { return budget_; }
