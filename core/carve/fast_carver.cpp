@@ -219,10 +219,6 @@ BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
   return change;
 }
 
-bool allCarved(const float* values) {
-  return std::all_of(values, values + VoxelMap::kBlockVoxels, [](float v) { return v == 0.0f; });
-}
-
 }  // namespace
 
 FastCarver::FastCarver(VoxelMap& map, const SonarModel& sonar, const CarveParams& params,
@@ -316,7 +312,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
         my_observed += static_cast<std::size_t>(change.observed);
         if (change.values) {
           ++my_changed;
-          map_.storeBlock(b, allCarved(values) ? nullptr : values, stamp, counts, false);
+          map_.storeBlock(b, values, stamp, counts, false);
         } else if (change.counts && values == scratch) {
           // Votes on voxels not yet carved nor lit: kept for the views to come.
           map_.storeBlock(b, values, map_.stamp(b), counts, false);

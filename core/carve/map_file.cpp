@@ -61,12 +61,10 @@ void blockValues(const VoxelMap& map, const Eigen::Vector3i& g, Values& out) {
 }
 
 void stored(VoxelMap& map, std::size_t b, const Values& values) {
-  const bool all_carved =
-      std::all_of(values.begin(), values.end(), [](float v) { return v == 0.0f; });
   const bool all_unknown =
       std::all_of(values.begin(), values.end(), [](float v) { return v == VoxelMap::kUnknown; });
   if (!all_unknown) {
-    map.storeBlock(b, all_carved ? nullptr : values.data(), 0);
+    map.storeBlock(b, values.data(), 0);  // kept as Free when every voxel is carved
   }
 }
 

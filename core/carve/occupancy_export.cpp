@@ -26,6 +26,7 @@ namespace {
 constexpr int kTreeDepth = 16;   // OctoMap's; key = voxel index + 32768
 constexpr int kBlockLevels = 3;  // a block is a subtree of 2^3 voxels a side
 
+// A node's state; its value is the node's two-bit code in its parent's bytes.
 enum class NodeState : std::uint8_t { Unknown = 0, Free = 1, Occupied = 2, Inner = 3 };
 
 // The exported voxels of one block, as Morton-ordered leaves: leaf m is the voxel whose
@@ -132,9 +133,7 @@ class BtWriter {
         continue;
       }
       ++nodes;
-      const std::uint8_t bits = child[c] == NodeState::Free       ? 0x1
-                                : child[c] == NodeState::Occupied ? 0x2
-                                                                  : 0x3;
+      const auto bits = static_cast<std::uint8_t>(child[c]);
       bytes[c / 4] = static_cast<std::uint8_t>(bytes[c / 4] | bits << (2 * (c % 4)));
     }
     out.push_back(static_cast<char>(bytes[0]));

@@ -5,7 +5,7 @@
 // viewer: the rest of the carved water, and occupied voxels buried inside occupied space
 // (under a seabed no view could carve, tens of millions of voxels): as octree nodes they
 // would take gigabytes. The file is written without building an octree (the bytes OctoMap's
-// writer would write for the same voxels; memory: the exported blocks, 128 bytes each, and
+// writer would write for the same voxels; memory: the exported blocks, 520 bytes each, and
 // the file).
 #pragma once
 

@@ -5,12 +5,10 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/floor_div.h"
 
 namespace sonarcarve {
 namespace {
-int floorDiv(int a, int b) {
-  return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
 
 // The mask of a block's carved voxels, if it holds carved and unknown voxels only.
 bool carvedMask(const float* values, std::array<std::uint64_t, 8>& mask) {
@@ -230,10 +228,12 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
   std::array<std::uint64_t, kMaskWords> mask{};
   const bool partial =
       compact && new_values != nullptr && !with_counts_ && carvedMask(new_values, mask);
-  if (partial && std::all_of(mask.begin(), mask.end(), [](std::uint64_t w) { return ~w == 0; })) {
-    new_values = nullptr;  // every voxel carved
-  }
-  if (new_values == nullptr) {
+  const bool all_carved =
+      new_values == nullptr ||
+      (partial
+           ? std::all_of(mask.begin(), mask.end(), [](std::uint64_t w) { return ~w == 0; })
+           : std::all_of(new_values, new_values + kBlockVoxels, [](float v) { return v == 0.0f; }));
+  if (all_carved) {
     if (state_[block] == BlockState::Mixed || state_[block] == BlockState::Partial) {
       std::lock_guard lock(storage_mutex_);
       releaseSlot(block);

@@ -103,7 +103,8 @@ class VoxelMap {
   float value(const Eigen::Vector3i& voxel) const;
 
   /// Replaces a block's state after carving: `values` (512) are the block's new contents, or
-  /// nullptr for Free (kept as Free, Partial or Mixed, whichever holds them); `counts`
+  /// nullptr for Free (kept as Free when every voxel is carved, else Partial or Mixed,
+  /// whichever holds them); `counts`
   /// (kCountBytes, or nullptr: zeros for a block that was not Mixed, unchanged otherwise) its
   /// counts. Thread safe against other calls for *different* blocks.
   /// `compact` false keeps values of carved and unknown voxels as floats (a block views still

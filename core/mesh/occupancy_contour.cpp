@@ -14,12 +14,10 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/floor_div.h"
+
 namespace sonarcarve {
 namespace {
-
-long floorDiv(long a, long b) {
-  return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
 
 // A tile's key: its three tile indices, 21 bits each (tiles of 64 voxels reach far past the
 // map's +-32768 voxels).
@@ -42,21 +40,17 @@ std::unordered_map<std::uint64_t, std::vector<Eigen::Vector3i>> voxelsByTile(
   for (const SurfacePoint& p : points) {
     const Eigen::Vector3i v =
         (p.position_m.cast<double>() / voxel_size_m).array().floor().cast<int>().matrix();
-    // Tile t holds samples [t * tile - border, (t + 1) * tile + border].
-    std::array<std::array<long, 2>, 3> span{};
+    // Tile t holds samples [t * tile - border, (t + 1) * tile + border]: the tiles from
+    // ceil((v - border) / tile) - 1 to floor((v + border) / tile).
+    Eigen::Vector3i first, last;
     for (int a = 0; a < 3; ++a) {
-      span[a] = {floorDiv(v[a] - border - 1, tile), floorDiv(v[a] + border, tile)};
+      first[a] = floorDiv(v[a] - border - 1, tile);
+      last[a] = floorDiv(v[a] + border, tile);
     }
-    for (long z = span[2][0]; z <= span[2][1]; ++z) {
-      for (long y = span[1][0]; y <= span[1][1]; ++y) {
-        for (long x = span[0][0]; x <= span[0][1]; ++x) {
-          const Eigen::Vector3i t(static_cast<int>(x), static_cast<int>(y), static_cast<int>(z));
-          const Eigen::Vector3i lo = t * tile - Eigen::Vector3i::Constant(border);
-          const Eigen::Vector3i hi =
-              (t + Eigen::Vector3i::Ones()) * tile + Eigen::Vector3i::Constant(border);
-          if ((v.array() >= lo.array()).all() && (v.array() <= hi.array()).all()) {
-            tiles[tileKey(t)].push_back(v);
-          }
+    for (int z = first.z(); z <= last.z(); ++z) {
+      for (int y = first.y(); y <= last.y(); ++y) {
+        for (int x = first.x(); x <= last.x(); ++x) {
+          tiles[tileKey({x, y, z})].push_back(v);
         }
       }
     }
