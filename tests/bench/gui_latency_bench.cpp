@@ -14,12 +14,12 @@
 #include <QTimer>
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "allocator.h"
+#include "common/process_memory.h"
 #include "main_window.h"
 #include "params_panel.h"
 #include "vtk_gl_widget.h"
@@ -51,16 +51,10 @@ class TimedApplication : public QApplication {
   }
 };
 
-// The process's resident memory, MB (Linux).
+// The process's resident memory, MB of 2^20 bytes (Linux).
 double residentMb() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmRSS:", 0) == 0) {
-      return std::stod(line.substr(6)) / 1024.0;
-    }
-  }
-  return 0.0;
+  const auto memory = sonarcarve::processMemory();
+  return memory ? static_cast<double>(memory->resident_bytes) / (1024.0 * 1024.0) : 0.0;
 }
 
 }  // namespace
