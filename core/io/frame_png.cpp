@@ -41,7 +41,7 @@ void requireFrameSize(const std::vector<unsigned char>& bytes, const std::string
 
 }  // namespace
 
-std::string encodeFramePng(const cv::Mat& image, const std::string& what) {
+cv::Mat wholeCounts(const cv::Mat& image, const std::string& what) {
   if (image.empty() || image.type() != CV_32F) {
     throw Error(what, "", "expected a non-empty single-channel float image");
   }
@@ -58,7 +58,11 @@ std::string encodeFramePng(const cv::Mat& image, const std::string& what) {
       out[c] = static_cast<std::uint16_t>(std::lround(v));
     }
   }
-  return encodePng(counts, what);
+  return counts;
+}
+
+std::string encodeFramePng(const cv::Mat& image, const std::string& what) {
+  return encodePng(wholeCounts(image, what), what);
 }
 
 cv::Mat readFramePng(const std::filesystem::path& path) {

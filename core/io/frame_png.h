@@ -8,8 +8,11 @@
 
 namespace sonarcarve {
 
-/// Encodes a CV_32F image as 16-bit PNG bytes. Values are rounded to the nearest count;
-/// throws Error if one is NaN or outside [0, 65535] (`what` names the frame in the message).
+/// A CV_32F image as the sonar's whole counts (CV_16U), as a frame file holds it: values are
+/// rounded to the nearest count; throws Error if one is NaN or outside [0, 65535] (`what` names
+/// the frame in the message).
+cv::Mat wholeCounts(const cv::Mat& image, const std::string& what);
+/// Encodes a CV_32F image as 16-bit PNG bytes: its wholeCounts, losslessly.
 std::string encodeFramePng(const cv::Mat& image, const std::string& what);
 /// Reads an 8- or 16-bit single-channel PNG into a CV_32F image. Throws Error naming the file
 /// if it is missing, empty, truncated, not a PNG or not single-channel.
