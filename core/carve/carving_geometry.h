@@ -54,6 +54,11 @@ class CarvingGeometry {
   bool sphereMayTouchFrustum(const Eigen::Vector3d& centre_sonar, double radius, double sin_half,
                              double cos_half) const;
 
+  /// Inward unit normals (sonar frame, z = 0) of the planes bounding the field of view's
+  /// bearings: p is inside the bearing wedge where both dot products with p are >= 0.
+  const Eigen::Vector3d& leftNormal() const { return left_normal_; }
+  const Eigen::Vector3d& rightNormal() const { return right_normal_; }
+
   float rangeMinSq() const { return range_min_sq_; }
   float rangeMaxSq() const { return range_max_sq_; }
   float sinHalfApertureSq() const { return sin_half_aperture_sq_; }

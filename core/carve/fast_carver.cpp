@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
@@ -32,6 +34,9 @@ struct FrameView {
   bool dark_is_exact = false;
   float keep_level = 0.0f;
   float sin2_carved = 0.0f;  // sin^2 of the elevation this frame can carve to
+  // Inward normals of the bearing wedge's planes (CarvingGeometry; vertical: x and y only).
+  Eigen::Vector2f left_normal = Eigen::Vector2f::Zero();
+  Eigen::Vector2f right_normal = Eigen::Vector2f::Zero();
   // Robust carving: views that must vote to carve a voxel (CarveParams::carve_votes).
   int carve_votes = 1;
 };
@@ -68,6 +73,19 @@ double carvedHalfElevation(const cv::Mat& pixels, const SonarModel& sonar, float
   return std::clamp(SincSquaredBeam(sonar.verticalAperture()).halfAngleAt(10.0 * std::log10(gain)),
                     aperture_half, main_lobe_half);
 }
+
+// Four floats (ints) in one register where the target has them (GCC/Clang vector extension;
+// plain code elsewhere). Comparisons give -1 (true) or 0 per lane.
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+constexpr Float4 kLanes = {0.0f, 1.0f, 2.0f, 3.0f};
+inline Float4 splat(float a) {
+  return Float4{a, a, a, a};
+}
+
+// Metres by which a voxel may lie outside a plane of the bearing wedge and still be projected:
+// far above fastAtan2's 1e-5 rad times any range, and the float error of its position.
+constexpr float kWedgeSlack = 2e-3f;
 
 // asin for the small angles of a vertical aperture: 1e-6 rad up to 15 degrees.
 inline float smallAsin(float s) {
@@ -156,18 +174,42 @@ BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
   };
   for (int z = 0; z < kSide; ++z) {
     for (int y = 0; y < kSide; ++y) {
-      Eigen::Vector3f p = p0 + static_cast<float>(y) * dy + static_cast<float>(z) * dz;
+      const Eigen::Vector3f row_p0 = p0 + static_cast<float>(y) * dy + static_cast<float>(z) * dz;
       const int row_start = (z * kSide + y) * kSide;
       float* v = values + row_start;
-      for (int x = 0; x < kSide; ++x, p += dx) {
-        if (v[x] == 0.0f) {
-          continue;  // carved: no view can change it, so skip the projection
-        }
-        const float r2 = p.squaredNorm();
-        const float z2 = p.z() * p.z();
-        if (r2 < rmin2 || r2 >= rmax2 || z2 > r2 * sin2_carved) {
+      // First the row's eight voxels, four at a time: which are not carved yet (no view can
+      // change a carved one) and lie inside the range window and the elevation this frame
+      // carves to. Only those are projected.
+      alignas(16) float xs[kSide], ys[kSide], zs[kSide], r2s[kSide];
+      alignas(16) std::int32_t inside[kSide];
+      for (int h = 0; h < kSide; h += 4) {
+        const Float4 fx = kLanes + splat(static_cast<float>(h));
+        const Float4 px = splat(row_p0.x()) + fx * splat(dx.x());
+        const Float4 py = splat(row_p0.y()) + fx * splat(dx.y());
+        const Float4 pz = splat(row_p0.z()) + fx * splat(dx.z());
+        const Float4 r2 = px * px + py * py + pz * pz;
+        Float4 value;
+        std::memcpy(&value, v + h, sizeof value);
+        // Inside the bearing wedge, but for a slack far above fastAtan2's error times any range
+        // (the beam lookup decides at its edges).
+        const Float4 left = px * splat(f.left_normal.x()) + py * splat(f.left_normal.y());
+        const Float4 right = px * splat(f.right_normal.x()) + py * splat(f.right_normal.y());
+        const Int4 in = (value != splat(0.0f)) & (r2 >= splat(rmin2)) & (r2 < splat(rmax2)) &
+                        (pz * pz <= r2 * splat(sin2_carved)) & (left >= splat(-kWedgeSlack)) &
+                        (right >= splat(-kWedgeSlack));
+        std::memcpy(xs + h, &px, sizeof px);
+        std::memcpy(ys + h, &py, sizeof py);
+        std::memcpy(zs + h, &pz, sizeof pz);
+        std::memcpy(r2s + h, &r2, sizeof r2);
+        std::memcpy(inside + h, &in, sizeof in);
+      }
+      for (int x = 0; x < kSide; ++x) {
+        if (inside[x] == 0) {
           continue;
         }
+        const Eigen::Vector3f p(xs[x], ys[x], zs[x]);
+        const float r2 = r2s[x];
+        const float z2 = p.z() * p.z();
         const bool in_aperture = z2 <= r2 * sin2;
         if (!f.beam_aware && !in_aperture) {
           continue;
@@ -247,6 +289,8 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   frame.dark_is_exact = params_.dark_pixels == CarveParams::DarkPixels::Exact;
   frame.keep_level = static_cast<float>(params_.keep_level);
   frame.carve_votes = params_.carve_votes;
+  frame.left_normal = geometry_.leftNormal().head<2>().cast<float>();
+  frame.right_normal = geometry_.rightNormal().head<2>().cast<float>();
   const double half_elevation =
       frame.beam_aware ? carvedHalfElevation(pixels, sonar, frame.keep_level, frame.dark_is_exact,
                                              geometry_.carvedHalfElevation())

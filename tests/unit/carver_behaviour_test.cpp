@@ -80,6 +80,23 @@ TEST_P(CarverBehaviour, UnseenVoxelsStayUnknownAndDarkPixelsCarve) {
   EXPECT_EQ(valueAt(*carver, {3.3, 0.0, 0.0}), VoxelMap::kUnknown);   // beyond 3 m
 }
 
+TEST_P(CarverBehaviour, DarkPixelsCarveUpToTheFieldOfViewsEdgesAndNoFurther) {
+  // The fan's edges are at +-5 degrees; the reference engine casts arcs on its beams' centres
+  // (+-4 degrees for the outer beams) at its bins' centres (2.02 m). A 2 cm voxel at 2 m spans
+  // 0.6 degree, so voxels 1 degree inside an edge and 0.8 degree outside it are wholly on their
+  // side of it.
+  auto carver = make();
+  view(*carver, ringImage(sonar_, 1.2, 50.0f), sonarAt(0.0));
+  for (const double side : {-1.0, 1.0}) {
+    const auto at = [&](double bearing_deg) {
+      const double b = side * degToRad(bearing_deg);
+      return Eigen::Vector3d(2.02 * std::cos(b), 2.02 * std::sin(b), 0.0);
+    };
+    EXPECT_EQ(valueAt(*carver, at(4.0)), 0.0f) << "side " << side;
+    EXPECT_EQ(valueAt(*carver, at(5.8)), VoxelMap::kUnknown) << "side " << side;
+  }
+}
+
 TEST_P(CarverBehaviour, ACarvedVoxelIsNeverRecreatedByALaterView) {
   auto carver = make();
   const Eigen::Vector3d p(2.01, 0.0, 0.0);
