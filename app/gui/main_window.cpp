@@ -751,6 +751,7 @@ void MainWindow::startRun() {
   // A re-run keeps the user's camera and frame; the map being carved shows until it ends.
   const CameraState camera = map_view_->cameraState();
   widgets::MapView::MapBlocks shown_map = map_view_->takeMap();
+  map_view_->setVoxelSize(params.carve.voxel_size_m);
   map_view_->setLive(true);
   if (view_settled_) {
     map_view_->setCameraState(camera);

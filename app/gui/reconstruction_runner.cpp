@@ -28,7 +28,11 @@ class JobObserver : public ReconstructionObserver {
     std::vector<widgets::MapViewBlock> blocks;
     blocks.reserve(update.blocks.size());
     for (const MapBlockUpdate& b : update.blocks) {
-      widgets::MapViewBlock view{b.block, b.points, b.values, {}, update.frames_done};
+      widgets::MapViewBlock view;
+      view.block = b.block;
+      view.points = b.points;
+      view.values = b.values;
+      view.frames_done = update.frames_done;
       if (truth_ && !b.points.empty()) {
         view.errors_m = errorsOf(b.points);
       }
