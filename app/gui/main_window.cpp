@@ -768,7 +768,8 @@ void MainWindow::startRun() {
     const QSignalBlocker block(pause_action_);
     pause_action_->setChecked(false);
   }
-  runner_->start({mission_, params, truth_, map_view_->colourBy(), map_view_->clip()});
+  runner_->start({mission_, params, truth_, map_view_->colourBy(), map_view_->clip(),
+                  map_view_->mapPointBudget()});
   map_view_->setCaption(
       tr("Carving: provisional; translucent voxels are still in view and may yet be carved "
          "away (ghosts in the beam's tails go as more views arrive)"));
