@@ -312,9 +312,13 @@ void MapView::fillMap() {
   const std::size_t stride = strideFor(total, kMaxDrawnMapPoints);
   fillWithStride(map_layer_, settled, stride);
   fillWithStride(provisional_layer_, changing, stride);
-  // One colour scale for both.
-  const double low = std::min(map_layer_.low, provisional_layer_.low);
-  const double high = std::max(map_layer_.high, provisional_layer_.high);
+  // One colour scale for both, from those that draw points (an empty one's scale is 0 to 1).
+  const bool settled_drawn = map_layer_.poly->GetNumberOfPoints() > 0;
+  const bool changing_drawn = provisional_layer_.poly->GetNumberOfPoints() > 0;
+  const PointLayer& first = settled_drawn || !changing_drawn ? map_layer_ : provisional_layer_;
+  const PointLayer& second = settled_drawn && changing_drawn ? provisional_layer_ : first;
+  const double low = std::min(first.low, second.low);
+  const double high = std::max(first.high, second.high);
   for (PointLayer* layer : {&map_layer_, &provisional_layer_}) {
     layer->low = low;
     layer->high = high;

@@ -269,6 +269,29 @@ class InspectionTest : public QObject {
     QCOMPARE(view.drawnPointCount(), std::size_t{kSide * kSide * kSide});
   }
 
+  // The depth scale spans the map's depths, whether every block is settled or some are
+  // provisional (the empty part's 0 to 1 is not in it).
+  void depthScaleSpansTheMapsDepths() {
+    MapView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setColourBy(MapView::ColourBy::Depth);
+    auto blocks = cubeBlocks();
+    for (auto& b : blocks) {
+      for (auto& p : b.points) {
+        p.z() += 10.0f;
+      }
+    }
+    view.applyBlocks(blocks);
+    view.flush();
+    QCOMPARE(view.legendText(), QString("depth (m): 10.00 to 12.00"));
+    view.setLive(true);
+    view.flush();
+    QCOMPARE(view.provisionalPointCount(), std::size_t{kSide * kSide * kSide});
+    QCOMPARE(view.legendText(), QString("depth (m): 10.00 to 12.00"));
+  }
+
   // The dialog starts from the clip in force and gives back what was typed.
   void clipDialogRoundTrips() {
     ViewClip clip;
