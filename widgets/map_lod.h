@@ -7,7 +7,7 @@
 // coarser first, one level at a time, until the points held are back under nine tenths of it.
 // A block that arrives again replaces what was held of it, at full detail; a block that arrives
 // empty is dropped at whatever level it was held. Limits: one point per occupied block is the
-// coarsest kept, so beyond `max_points` occupied blocks (about 16,000 m^2 of seabed at the
+// coarsest kept, so beyond `max_points` occupied blocks (about 12,800 m^2 of seabed at the
 // default budget and 2 cm voxels) the points held grow with the blocks. Plain data, no Qt and no
 // VTK; not thread safe.
 #pragma once
@@ -28,7 +28,8 @@ MapViewBlock coarsened(const MapViewBlock& block, int level, double voxel_size_m
 class MapLod {
  public:
   /// Points held at most (beyond one per occupied block), about 24 bytes each: 12 MB. The
-  /// riser demo's map, 0.1 to 0.2 M voxels, is held whole (docs/benchmarks.md).
+  /// riser demo's map (at most 103,000 voxels) and the 1,500-frame riser orbit's (77,000) are
+  /// held whole; the 3,990-frame seabed survey's (550,000) is not (docs/benchmarks.md).
   static constexpr std::size_t kDefaultMaxPoints = 500000;
   /// The level of one point per block: blocks of 8 voxels a side (VoxelMap::kBlockSide).
   static constexpr int kBlockLevel = 3;

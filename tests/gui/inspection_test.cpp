@@ -1,7 +1,7 @@
 // The 3D view's inspection tools on data made here, under Xvfb (the view needs OpenGL): the
 // scale bar follows the zoom, the clip box and the cross-section draw only what lies in them,
 // the mesh is coloured by the chosen value, a result's layers built on a worker are shown as
-// they are, and picks are marked.
+// they are, picks are marked, and a map past the view's budget of points is held coarser.
 #include <QDoubleSpinBox>
 #include <QtTest>
 #include <cmath>
