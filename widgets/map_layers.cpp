@@ -3,25 +3,29 @@
 #include <vtkIdTypeArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkUnsignedIntArray.h>
 #include <algorithm>
 
 namespace sonarcarve::widgets {
 namespace {
 
-// Calls visit(block, k) for each point drawn: those inside `region` (all without one), every
-// stride-th of them.
+// Calls visit(block, k) for each point drawn: of those inside `region` (all without one), the
+// points whose voxels include a multiple of `stride` when the voxels are counted in order (every
+// stride-th voxel at full detail).
 template <typename Visit>
 void forEachDrawn(const std::vector<const MapViewBlock*>& blocks, const Eigen::AlignedBox3d* region,
                   std::size_t stride, Visit visit) {
-  std::size_t seen = 0;
+  std::size_t seen = 0;  // voxels of the points before this one
   for (const MapViewBlock* b : blocks) {
     for (std::size_t k = 0; k < b->points.size(); ++k) {
       if (region != nullptr && !region->contains(b->points[k].cast<double>())) {
         continue;
       }
-      if (seen++ % stride == 0) {
+      const std::size_t next = seen + b->voxelsAt(k);
+      if ((seen + stride - 1) / stride < (next + stride - 1) / stride) {
         visit(*b, k);
       }
+      seen = next;
     }
   }
 }
@@ -29,9 +33,11 @@ void forEachDrawn(const std::vector<const MapViewBlock*>& blocks, const Eigen::A
 }  // namespace
 
 MeshData meshData(const Mesh& mesh, std::vector<float> vertex_errors_m) {
-  MeshData data{MapViewBlock{0, mesh.vertices, mesh.intensity, std::move(vertex_errors_m)},
-                mesh.triangles, mesh.normals};
+  MeshData data{{}, mesh.triangles, mesh.normals};
+  data.vertices.points = mesh.vertices;
+  data.vertices.values = mesh.intensity;
   data.vertices.values.resize(mesh.vertices.size(), 0.0f);
+  data.vertices.errors_m = std::move(vertex_errors_m);
   return data;
 }
 
@@ -70,16 +76,18 @@ vtkSmartPointer<vtkCellArray> pointCells(vtkIdType count, bool as_line) {
   return cells;
 }
 
-std::size_t countInside(const std::vector<const MapViewBlock*>& blocks,
-                        const Eigen::AlignedBox3d* region) {
+std::size_t voxelsInside(const std::vector<const MapViewBlock*>& blocks,
+                         const Eigen::AlignedBox3d* region) {
   std::size_t n = 0;
-  if (region == nullptr) {
-    for (const MapViewBlock* b : blocks) {
-      n += b->points.size();
+  for (const MapViewBlock* b : blocks) {
+    if (region == nullptr) {
+      n += b->voxelCount();
+      continue;
     }
-    return n;
+    for (std::size_t k = 0; k < b->points.size(); ++k) {
+      n += region->contains(b->points[k].cast<double>()) ? b->voxelsAt(k) : 0;
+    }
   }
-  forEachDrawn(blocks, region, 1, [&](const MapViewBlock&, std::size_t) { ++n; });
   return n;
 }
 
@@ -124,21 +132,34 @@ PreparedLayer preparePoints(const std::vector<const MapViewBlock*>& blocks,
                             const Eigen::AlignedBox3d* region, std::size_t stride, ColourBy by) {
   PreparedLayer layer;
   layer.stride = std::max<std::size_t>(1, stride);
-  const std::size_t total = countInside(blocks, region);
-  const auto n = static_cast<vtkIdType>((total + layer.stride - 1) / layer.stride);
+  vtkIdType n = 0;
+  forEachDrawn(blocks, region, layer.stride, [&](const MapViewBlock&, std::size_t) { ++n; });
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToFloat();
   points->SetNumberOfPoints(n);
   auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
+  // The voxels each point stands for, when some stand for more than one (to say so at a pick).
+  const bool coarser = std::any_of(blocks.begin(), blocks.end(),
+                                   [](const MapViewBlock* b) { return !b->voxels.empty(); });
+  auto voxels = vtkSmartPointer<vtkUnsignedIntArray>::New();
+  voxels->SetName(kVoxelsArray);
+  voxels->SetNumberOfValues(coarser ? n : 0);
+  vtkIdType i = 0;
   forEachDrawn(blocks, region, layer.stride, [&](const MapViewBlock& b, std::size_t k) {
     const Eigen::Vector3f& p = b.points[k];
     xyz[0] = p.x();
     xyz[1] = p.y();
     xyz[2] = p.z();
     xyz += 3;
+    if (coarser) {
+      voxels->SetValue(i++, static_cast<unsigned int>(b.voxelsAt(k)));
+    }
   });
   layer.poly = vtkSmartPointer<vtkPolyData>::New();
   layer.poly->SetPoints(points);
+  if (coarser) {
+    layer.poly->GetPointData()->AddArray(voxels);
+  }
   layer.poly->SetVerts(pointCells(n, false));
   layer.colours = layerColours(blocks, region, layer.stride, by);
   layer.poly->GetPointData()->SetScalars(layer.colours.scalars);

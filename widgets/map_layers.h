@@ -14,19 +14,11 @@
 #include <optional>
 #include <vector>
 
+#include "map_view_block.h"
 #include "mesh/surface_mesher.h"
 #include "occlusion/surface_points.h"
 
 namespace sonarcarve::widgets {
-
-/// One block of the map as the viewer receives it (a block with no points has become empty).
-struct MapViewBlock {
-  std::size_t block = 0;
-  std::vector<Eigen::Vector3f> points;  ///< voxel centres, world NED
-  std::vector<float> values;            ///< carved intensities
-  std::vector<float> errors_m;          ///< distance to the ground truth, or empty
-  std::size_t frames_done = 0;          ///< frames carved when the block last changed
-};
 
 /// What the points of the 3D view are coloured by.
 enum class ColourBy { Intensity, Depth, Error };
@@ -58,22 +50,30 @@ MeshData meshData(const Mesh& mesh, std::vector<float> vertex_errors_m = {});
 /// Surface points as a block: positions, intensities and errors (may be empty).
 MapViewBlock surfaceBlock(const SurfacePoints& surface, std::vector<float> errors_m = {});
 
+/// The name of the point array of the voxels each drawn point stands for.
+inline constexpr const char* kVoxelsArray = "voxels";
+
 /// Cells that draw each of `count` points, or the points in order as one polyline.
 vtkSmartPointer<vtkCellArray> pointCells(vtkIdType count, bool as_line);
 
-/// How many points of `blocks` lie inside `region` (all without one).
-std::size_t countInside(const std::vector<const MapViewBlock*>& blocks,
-                        const Eigen::AlignedBox3d* region);
+/// How many voxels the points of `blocks` inside `region` (all without one) stand for: their
+/// number at full detail.
+std::size_t voxelsInside(const std::vector<const MapViewBlock*>& blocks,
+                         const Eigen::AlignedBox3d* region);
 
-/// The stride that draws at most `max_points` of `count` points.
+/// The stride that draws at most `max_points` of `count` voxels.
 std::size_t strideFor(std::size_t count, std::size_t max_points);
 
-/// The values of every stride-th point of `blocks` inside `region`, by `by` (intensity: the
-/// scale ends at the 98th percentile; depth: the range; error: 0 to 10 cm).
+/// The values of the points of `blocks` inside `region` drawn at `stride`, by `by` (intensity:
+/// the scale ends at the 98th percentile; depth: the range; error: 0 to 10 cm).
 LayerColours layerColours(const std::vector<const MapViewBlock*>& blocks,
                           const Eigen::AlignedBox3d* region, std::size_t stride, ColourBy by);
 
-/// Every stride-th point of `blocks` inside `region` as vertices, coloured by `by`.
+/// The points of `blocks` inside `region` drawn at `stride` as vertices, coloured by `by`:
+/// every stride-th voxel; a point standing for several voxels (a coarser level of detail) is
+/// drawn when one of its voxels would be, so one standing for `stride` voxels or more always.
+/// At most ceil(voxelsInside / stride) points. When some stand for several voxels, the
+/// polydata's point array kVoxelsArray says how many each does.
 PreparedLayer preparePoints(const std::vector<const MapViewBlock*>& blocks,
                             const Eigen::AlignedBox3d* region, std::size_t stride, ColourBy by);
 

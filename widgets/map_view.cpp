@@ -4,6 +4,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
@@ -170,8 +171,7 @@ void MapView::clearMap() {
 }
 
 MapView::MapBlocks MapView::takeMap() {
-  MapBlocks taken;
-  taken.swap(blocks_);
+  MapBlocks taken = map_.take();
   latest_frames_done_ = 0;
   surface_ = MapViewBlock{};
   has_errors_ = false;
@@ -241,7 +241,7 @@ void MapView::setLayer(Layer layer) {
 
 std::vector<const MapViewBlock*> MapView::mapBlocks() const {
   std::vector<const MapViewBlock*> all;
-  for (const auto& [id, b] : blocks_) {
+  for (const auto& [id, b] : map_.blocks()) {
     all.push_back(&b);
   }
   return all;
@@ -265,15 +265,18 @@ std::size_t MapView::settledPointCount() const {
 }
 
 void MapView::applyBlocks(std::vector<MapViewBlock> blocks) {
-  for (MapViewBlock& b : blocks) {
-    if (b.points.empty()) {
-      blocks_.erase(b.block);
-    } else {
+  for (const MapViewBlock& b : blocks) {
+    if (!b.points.empty()) {
       has_errors_ = has_errors_ || !b.errors_m.empty();
       latest_frames_done_ = std::max(latest_frames_done_, b.frames_done);
-      blocks_[b.block] = std::move(b);
     }
   }
+  map_.apply(std::move(blocks));
+  scheduleRedraw();
+}
+
+void MapView::setMapPointBudget(std::size_t max_points) {
+  map_.setMaxPoints(max_points);
   scheduleRedraw();
 }
 
@@ -288,18 +291,10 @@ void MapView::flush() {
   redraw();
 }
 
-std::size_t MapView::mapPointCount() const {
-  std::size_t n = 0;
-  for (const auto& [id, b] : blocks_) {
-    n += b.points.size();
-  }
-  return n;
-}
-
 std::vector<Eigen::Vector3f> MapView::mapPoints() const {
   std::vector<Eigen::Vector3f> all;
-  all.reserve(mapPointCount());
-  for (const auto& [id, b] : blocks_) {
+  all.reserve(map_.pointCount());
+  for (const auto& [id, b] : map_.blocks()) {
     all.insert(all.end(), b.points.begin(), b.points.end());
   }
   return all;
@@ -312,14 +307,18 @@ void MapView::fillMap() {
   std::size_t total = 0;
   for (const MapViewBlock* b : mapBlocks()) {
     (provisional(*b) ? changing : settled).push_back(b);
-    total += countInside({b}, clipRegion());
+    total += voxelsInside({b}, clipRegion());
   }
   const std::size_t stride = strideFor(total, kMaxDrawnMapPoints);
   fillWithStride(map_layer_, settled, stride);
   fillWithStride(provisional_layer_, changing, stride);
-  // One colour scale for both.
-  const double low = std::min(map_layer_.low, provisional_layer_.low);
-  const double high = std::max(map_layer_.high, provisional_layer_.high);
+  // One colour scale for both, from those that draw points (an empty one's scale is 0 to 1).
+  const bool settled_drawn = map_layer_.poly->GetNumberOfPoints() > 0;
+  const bool changing_drawn = provisional_layer_.poly->GetNumberOfPoints() > 0;
+  const PointLayer& first = settled_drawn || !changing_drawn ? map_layer_ : provisional_layer_;
+  const PointLayer& second = settled_drawn && changing_drawn ? provisional_layer_ : first;
+  const double low = std::min(first.low, second.low);
+  const double high = std::max(first.high, second.high);
   for (PointLayer* layer : {&map_layer_, &provisional_layer_}) {
     layer->low = low;
     layer->high = high;
@@ -331,12 +330,12 @@ void MapView::fillMap() {
 
 void MapView::redraw() {
   fillMap();
-  if (first_points_ && !blocks_.empty()) {
+  if (first_points_ && !map_.blocks().empty()) {
     first_points_ = false;
     fitCamera();
   }
   render();
-  emit redrawn(mapPointCount());
+  emit redrawn(map_.pointCount());
 }
 
 void MapView::fillWithStride(PointLayer& layer, const std::vector<const MapViewBlock*>& blocks,
@@ -537,6 +536,13 @@ QString MapView::pickAt(QPoint position, Eigen::Vector3d* ned) {
     case ColourBy::Intensity:
       what = tr("intensity %1 counts").arg(value, 0, 'f', 0);
       break;
+  }
+  // A point held at a coarser level of detail: the centroid and the mean of its voxels.
+  if (vtkDataArray* voxels = shown->poly->GetPointData()->GetArray(kVoxelsArray)) {
+    const auto count = static_cast<int>(voxels->GetComponent(id, 0));
+    if (count > 1) {
+      what += tr(" (mean of %1 voxels)").arg(count);
+    }
   }
   return tr("N %1 E %2 D %3 m, %4")
       .arg(p[0], 0, 'f', 2)

@@ -3,7 +3,9 @@
 // surface points that occlusion resolution keeps, and the surface mesh; points are coloured by
 // intensity, depth or error against the ground truth. Also the sonar's track, the current
 // frame's frustum and its fan in 3D. Updates carry only the blocks that changed; the view keeps its
-// own copy of every block and redraws at most every `kRedrawInterval_ms`. GUI thread only.
+// own copy of the blocks within a budget of points (MapLod: every voxel while it fits, coarser
+// levels for the blocks the survey has left when it does not) and redraws at most every
+// `kRedrawInterval_ms`. GUI thread only.
 #pragma once
 
 #include <vtkSmartPointer.h>
@@ -21,6 +23,7 @@
 
 #include "io/camera_state.h"
 #include "map_layers.h"
+#include "map_lod.h"
 #include "mesh/surface_mesher.h"
 #include "sonar/sonar_model.h"
 #include "view_clip.h"
@@ -51,7 +54,8 @@ class MapView : public QWidget {
   static constexpr int kRedrawInterval_ms = 200;
   /// The carved map is drawn with at most this many points (every n-th voxel): software
   /// OpenGL on 2 cores took 30 to 90 ms for 90,000 points while carving, and the GUI thread
-  /// must not block for more than 50 ms. The whole map is kept and exported.
+  /// must not block for more than 50 ms. A point held at a coarser level of detail counts the
+  /// voxels it stands for (map_layers.h, preparePoints). The run's own map is what is exported.
   static constexpr std::size_t kMaxDrawnMapPoints = 40000;
   /// While carving, a block of the map changed within this many frames is provisional (the
   /// frames still see it and may carve its voxels away): drawn translucent and smaller.
@@ -62,7 +66,7 @@ class MapView : public QWidget {
 
   void clearMap();
   /// The view's copy of the carved map's blocks, by block number.
-  using MapBlocks = std::map<std::size_t, MapViewBlock>;
+  using MapBlocks = MapLod::Blocks;
   /// As clearMap(), giving the blocks it held to the caller, who can have a worker free them
   /// (a riser's took the GUI thread 130 ms and more).
   [[nodiscard]] MapBlocks takeMap();
@@ -75,8 +79,16 @@ class MapView : public QWidget {
   /// Redraws now instead of at the next redraw tick (for tests and screenshots).
   void flush();
   /// Occupied voxels of the carved map as received so far.
-  std::size_t mapPointCount() const;
+  std::size_t mapPointCount() const { return map_.voxelCount(); }
+  /// The points the view holds of the carved map: every occupied voxel while they fit in the
+  /// budget, else coarser points for the blocks changed longest ago (MapLod).
   std::vector<Eigen::Vector3f> mapPoints() const;
+  std::size_t heldMapPointCount() const { return map_.pointCount(); }
+  /// The most points of the carved map the view holds (MapLod::kDefaultMaxPoints unless set).
+  void setMapPointBudget(std::size_t max_points);
+  std::size_t mapPointBudget() const { return map_.maxPoints(); }
+  /// The carved map's voxel size, whose grid the coarser levels follow.
+  void setVoxelSize(double voxel_size_m) { map_.setVoxelSize(voxel_size_m); }
   /// The run's surface points (and their errors against the truth, if known).
   void setSurface(MapViewBlock surface);
 
@@ -161,6 +173,7 @@ class MapView : public QWidget {
   QImage grabImage();
 
  signals:
+  /// The carved map was redrawn; `points`: the points the view holds of it.
   void redrawn(std::size_t points);
   /// A click picked a point: pickAt's text and the point's world position (north, east, down).
   void pointPicked(const QString& text, const QVector3D& ned);
@@ -203,7 +216,7 @@ class MapView : public QWidget {
   ColourLegend* legend_ = nullptr;
   AxesTriad* triad_ = nullptr;
   ScaleBar* scale_bar_ = nullptr;
-  MapBlocks blocks_;
+  MapLod map_;
   MapViewBlock surface_;
   Layer layer_ = Layer::Map;
   ColourBy colour_by_ = ColourBy::Intensity;

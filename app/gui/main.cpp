@@ -1,6 +1,7 @@
 // sonarcarve: the workbench GUI.
 //   sonarcarve [MISSION | SESSION.sonarcarve] [--params P.yaml] [--noise-model N.yaml]
 //              [--screenshot FILE.png] [--quit-when-done] [--frame N] [--colour-by MODE]
+//              [--view-points N] [--show map|surface|mesh]
 // With --screenshot the window is captured once the first reconstruction has finished
 // (for the README and the user guide); --quit-when-done then exits with the run's status.
 #include <QApplication>
@@ -44,10 +45,41 @@ int main(int argc, char** argv) {
                                 "Exit once the first run finishes (as --screenshot has it)");
   const QCommandLineOption frame("frame", "Frame to show once the first run finishes", "index");
   const QCommandLineOption colour("colour-by", "intensity | depth | error", "mode");
-  parser.addOptions({params, noise, screenshot, quit, frame, colour});
+  const QCommandLineOption view_points(
+      "view-points",
+      QString("Most points of the carved map the 3D view holds (default %1): past it, the "
+              "blocks changed longest ago are held coarser")
+          .arg(sonarcarve::widgets::MapLod::kDefaultMaxPoints),
+      "count");
+  const QCommandLineOption show(
+      "show",
+      "3D view's layer once the first run finishes: map | surface | mesh (default: surface)",
+      "layer");
+  parser.addOptions({params, noise, screenshot, quit, frame, colour, view_points, show});
   parser.process(app);
 
   sonarcarve::gui::MainWindow window;
+  if (parser.isSet(view_points)) {
+    bool ok = false;
+    const qulonglong budget = parser.value(view_points).toULongLong(&ok);
+    if (!ok || budget == 0) {
+      std::cerr << "sonarcarve: --view-points: expected a whole number of points, at least 1, "
+                   "not \""
+                << parser.value(view_points).toStdString() << "\"\n";
+      return 2;
+    }
+    window.mapView().setMapPointBudget(budget);
+  }
+  if (parser.isSet(show)) {
+    const QStringList layers{"map", "surface", "mesh"};  // MapView::Layer's order
+    const auto layer = layers.indexOf(parser.value(show));
+    if (layer < 0) {
+      std::cerr << "sonarcarve: --show: expected map, surface or mesh, not \""
+                << parser.value(show).toStdString() << "\"\n";
+      return 2;
+    }
+    window.chooseLayer(static_cast<sonarcarve::widgets::MapView::Layer>(layer));
+  }
   if (parser.isSet(params) && !window.loadParams(parser.value(params))) {
     std::cerr << "sonarcarve: cannot load " << parser.value(params).toStdString() << "\n";
   }

@@ -751,6 +751,7 @@ void MainWindow::startRun() {
   // A re-run keeps the user's camera and frame; the map being carved shows until it ends.
   const CameraState camera = map_view_->cameraState();
   widgets::MapView::MapBlocks shown_map = map_view_->takeMap();
+  map_view_->setVoxelSize(params.carve.voxel_size_m);
   map_view_->setLive(true);
   if (view_settled_) {
     map_view_->setCameraState(camera);
@@ -767,7 +768,8 @@ void MainWindow::startRun() {
     const QSignalBlocker block(pause_action_);
     pause_action_->setChecked(false);
   }
-  runner_->start({mission_, params, truth_, map_view_->colourBy(), map_view_->clip()});
+  runner_->start({mission_, params, truth_, map_view_->colourBy(), map_view_->clip(),
+                  map_view_->mapPointBudget()});
   map_view_->setCaption(
       tr("Carving: provisional; translucent voxels are still in view and may yet be carved "
          "away (ghosts in the beam's tails go as more views arrive)"));

@@ -1,5 +1,6 @@
 #include "reconstruction_runner.h"
 
+#include <algorithm>
 #include <unordered_map>
 
 #include "common/thread_pool.h"
@@ -13,9 +14,10 @@ class JobObserver : public ReconstructionObserver {
   using PostBlocks = std::function<void(std::vector<widgets::MapViewBlock>)>;
   using PostFrame = std::function<void(std::size_t)>;
   using PostSkip = std::function<void(std::string)>;
-  JobObserver(std::shared_ptr<const MeshDistance> truth, PostBlocks blocks, PostFrame frame,
-              PostSkip skip)
-      : truth_(std::move(truth)),
+  JobObserver(std::shared_ptr<const MeshDistance> truth, std::size_t max_cached_voxels,
+              PostBlocks blocks, PostFrame frame, PostSkip skip)
+      : max_cached_voxels_(max_cached_voxels),
+        truth_(std::move(truth)),
         blocks_(std::move(blocks)),
         frame_(std::move(frame)),
         skip_(std::move(skip)) {}
@@ -28,18 +30,28 @@ class JobObserver : public ReconstructionObserver {
     std::vector<widgets::MapViewBlock> blocks;
     blocks.reserve(update.blocks.size());
     for (const MapBlockUpdate& b : update.blocks) {
-      widgets::MapViewBlock view{b.block, b.points, b.values, {}, update.frames_done};
-      if (truth_ && !b.points.empty()) {
-        view.errors_m = errorsOf(b.points);
+      widgets::MapViewBlock view;
+      view.block = b.block;
+      view.points = b.points;
+      view.values = b.values;
+      view.frames_done = update.frames_done;
+      if (truth_) {
+        view.errors_m = errorsOf(b.block, b.points, update.frames_done);
       }
       blocks.push_back(std::move(view));
+    }
+    if (cached_voxels_ > max_cached_voxels_) {
+      forgetOldestBlocks();
     }
     blocks_(std::move(blocks));
   }
 
  private:
   // A voxel's centre never moves, so its distance to the truth is computed once: a block
-  // changes at nearly every frame, its voxels' errors do not.
+  // changes at nearly every frame, its voxels' errors do not. The errors are kept per block for
+  // the voxels last sent (a block sent empty is forgotten), for at most `max_cached_voxels_`
+  // voxels: past it, those of the blocks changed longest ago are forgotten (computed again if
+  // such a block changes again), as the 3D view holds them coarser (widgets/map_lod.h).
   struct CentreHash {
     std::size_t operator()(const Eigen::Vector3f& p) const {
       std::size_t h = 0;
@@ -52,29 +64,65 @@ class JobObserver : public ReconstructionObserver {
   struct CentreEqual {
     bool operator()(const Eigen::Vector3f& a, const Eigen::Vector3f& b) const { return a == b; }
   };
+  struct BlockErrors {
+    std::vector<Eigen::Vector3f> points;
+    std::vector<float> errors_m;
+    std::size_t frames_done = 0;
+  };
 
-  std::vector<float> errorsOf(const std::vector<Eigen::Vector3f>& points) {
+  std::vector<float> errorsOf(std::size_t block, const std::vector<Eigen::Vector3f>& points,
+                              std::size_t frames_done) {
+    std::unordered_map<Eigen::Vector3f, float, CentreHash, CentreEqual> known;
+    if (const auto cached = known_errors_.find(block); cached != known_errors_.end()) {
+      for (std::size_t k = 0; k < cached->second.points.size(); ++k) {
+        known.emplace(cached->second.points[k], cached->second.errors_m[k]);
+      }
+      cached_voxels_ -= cached->second.points.size();
+      known_errors_.erase(cached);
+    }
     std::vector<Eigen::Vector3f> unknown;
     for (const auto& p : points) {
-      if (!known_errors_.contains(p)) {
+      if (!known.contains(p)) {
         unknown.push_back(p);
       }
     }
     const std::vector<float> computed = truth_->distances(unknown, kErrorCap_m);
     for (std::size_t i = 0; i < unknown.size(); ++i) {
-      known_errors_.emplace(unknown[i], computed[i]);
+      known.emplace(unknown[i], computed[i]);
     }
     std::vector<float> errors;
     errors.reserve(points.size());
     for (const auto& p : points) {
-      errors.push_back(known_errors_.at(p));
+      errors.push_back(known.at(p));
+    }
+    if (!points.empty()) {
+      known_errors_[block] = BlockErrors{points, errors, frames_done};
+      cached_voxels_ += points.size();
     }
     return errors;
   }
 
+  void forgetOldestBlocks() {
+    std::vector<std::pair<std::size_t, std::size_t>> by_age;  // frames done, block
+    for (const auto& [block, cached] : known_errors_) {
+      by_age.emplace_back(cached.frames_done, block);
+    }
+    std::sort(by_age.begin(), by_age.end());
+    const std::size_t target = max_cached_voxels_ - max_cached_voxels_ / 10;
+    for (const auto& [frames_done, block] : by_age) {
+      if (cached_voxels_ <= target) {
+        break;
+      }
+      cached_voxels_ -= known_errors_.at(block).points.size();
+      known_errors_.erase(block);
+    }
+  }
+
   // Colours saturate at 10 cm: farther voxels need no exact distance.
   static constexpr double kErrorCap_m = 0.2;
-  std::unordered_map<Eigen::Vector3f, float, CentreHash, CentreEqual> known_errors_;
+  std::size_t max_cached_voxels_;
+  std::unordered_map<std::size_t, BlockErrors> known_errors_;
+  std::size_t cached_voxels_ = 0;
   std::shared_ptr<const MeshDistance> truth_;
   PostBlocks blocks_;
   PostFrame frame_;
@@ -101,7 +149,7 @@ int ReconstructionRunner::start(RunRequest request) {
       [this, current, request = std::move(request)](JobContext& progress) {
         lowerThisThreadPriority();
         JobObserver observer(
-            request.truth,
+            request.truth, request.view_points,
             [this, current, &progress](std::vector<widgets::MapViewBlock> blocks) {
               progress.post([this, current, blocks = std::move(blocks)] {
                 emit blocksChanged(current(), blocks);

@@ -32,6 +32,9 @@ struct RunRequest {
   /// and the mesh's layers for them.
   widgets::MapView::ColourBy colour_by = widgets::MapView::ColourBy::Intensity;
   widgets::ViewClip clip;
+  /// The 3D view's budget of map points: the errors against the truth are kept for as many
+  /// voxels at most.
+  std::size_t view_points = widgets::MapLod::kDefaultMaxPoints;
 };
 
 class ReconstructionRunner : public QObject {

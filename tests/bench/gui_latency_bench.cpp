@@ -2,11 +2,13 @@
 // more than 50 ms. A 5 ms timer runs on the GUI thread from the start of the run to its end;
 // every gap between two ticks beyond the 5 ms is time the event loop could not answer.
 //   sonarcarve_gui_latency_bench MISSION [--noise-model N.yaml] [--params P.yaml] [--runs N]
-//                                [--json] [--trace]
+//                                [--json] [--trace] [--view-points N]
 // --trace names every event that took 20 ms or more (nested events are listed too). With
 // --runs N the mission runs N times (a re-run as a parameter change starts it); the resident
 // memory is printed after each run, and at the end the time to close and destroy the window
-// (what quitting costs after the last run).
+// (what quitting costs after the last run). It also counts the 3D map's redraws and the 3D
+// view's repaints (its frame rate while carving), the most map points the view held at once,
+// and the process's peak resident memory (VmHWM).
 // Run it under Xvfb (xvfb-run -a -s '-screen 0 1280x800x24'); it prints the worst gap, the
 // 99th percentile and the run's duration. It asserts nothing: figures go to docs/benchmarks.md.
 #include <QApplication>
@@ -21,6 +23,7 @@
 #include "allocator.h"
 #include "common/process_memory.h"
 #include "main_window.h"
+#include "map_view.h"
 #include "params_panel.h"
 #include "vtk_gl_widget.h"
 
@@ -51,11 +54,25 @@ class TimedApplication : public QApplication {
   }
 };
 
-// The process's resident memory, MB of 2^20 bytes (Linux).
+// The process's resident memory now and at its peak (VmHWM), MB of 2^20 bytes (Linux).
 double residentMb() {
   const auto memory = sonarcarve::processMemory();
   return memory ? static_cast<double>(memory->resident_bytes) / (1024.0 * 1024.0) : 0.0;
 }
+double peakResidentMb() {
+  const auto memory = sonarcarve::processMemory();
+  return memory ? static_cast<double>(memory->peak_resident_bytes) / (1024.0 * 1024.0) : 0.0;
+}
+
+// Counts the paint events of a widget: the 3D view's frames.
+class PaintCounter : public QObject {
+ public:
+  std::size_t paints = 0;
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    paints += event->type() == QEvent::Paint ? 1 : 0;
+    return QObject::eventFilter(watched, event);
+  }
+};
 
 }  // namespace
 
@@ -71,6 +88,7 @@ int main(int argc, char** argv) {
   int runs = 1;
   QString noise_model;
   QString params_file;
+  std::size_t view_points = 0;  // the view's default budget
   for (int i = 2; i < argc; ++i) {
     const QString arg = argv[i];
     if (arg == "--json") {
@@ -81,6 +99,8 @@ int main(int argc, char** argv) {
       noise_model = argv[++i];
     } else if (arg == "--params" && i + 1 < argc) {
       params_file = argv[++i];
+    } else if (arg == "--view-points" && i + 1 < argc) {
+      view_points = QString(argv[++i]).toULongLong();
     } else if (arg == "--runs" && i + 1 < argc) {
       runs = std::max(1, QString(argv[++i]).toInt());
     }
@@ -95,7 +115,25 @@ int main(int argc, char** argv) {
     p.noise_model = noise_model.toStdString();
     window.setParams(p);
   }
+  if (view_points > 0) {
+    window.mapView().setMapPointBudget(view_points);
+  }
   window.show();
+  // The 3D view's map redraws and repaints while carving, the most map points it held and the
+  // most voxels they stood for.
+  std::size_t map_redraws = 0;
+  std::size_t most_map_points = 0;
+  std::size_t most_map_voxels = 0;
+  QObject::connect(&window.mapView(), &sonarcarve::widgets::MapView::redrawn,
+                   [&](std::size_t points) {
+                     ++map_redraws;
+                     most_map_points = std::max(most_map_points, points);
+                     most_map_voxels = std::max(most_map_voxels, window.mapView().mapPointCount());
+                   });
+  PaintCounter view_paints;
+  if (auto* gl = window.mapView().findChild<sonarcarve::widgets::VtkGlWidget*>()) {
+    gl->installEventFilter(&view_paints);
+  }
 
   constexpr int kTick_ms = 5;
   std::vector<double> gaps_ms;
@@ -158,16 +196,24 @@ int main(int argc, char** argv) {
       sorted[static_cast<std::size_t>(0.99 * static_cast<double>(sorted.size() - 1))];
   const double median = sorted[sorted.size() / 2];
   const double run_s = static_cast<double>(run_clock.elapsed()) / 1000.0;
+  const double redraws_per_s = static_cast<double>(map_redraws) / std::max(run_s, 1e-3);
+  const double paints_per_s = static_cast<double>(view_paints.paints) / std::max(run_s, 1e-3);
   if (json) {
     std::printf(
         "{\"ticks\": %zu, \"worst_block_ms\": %.1f, \"p99_block_ms\": %.1f, "
-        "\"median_block_ms\": %.2f, \"run_s\": %.2f}\n",
-        sorted.size(), worst, p99, median, run_s);
+        "\"median_block_ms\": %.2f, \"run_s\": %.2f, \"map_redraws_per_s\": %.2f, "
+        "\"view_paints_per_s\": %.2f, \"most_map_points_held\": %zu, \"most_map_voxels\": "
+        "%zu, \"peak_resident_mb\": %.0f}\n",
+        sorted.size(), worst, p99, median, run_s, redraws_per_s, paints_per_s, most_map_points,
+        most_map_voxels, peakResidentMb());
   } else {
     std::printf(
         "event loop while carving: %zu ticks, worst block %.1f ms, p99 %.1f ms, median "
-        "%.2f ms; run %.2f s\n",
-        sorted.size(), worst, p99, median, run_s);
+        "%.2f ms; run %.2f s\n"
+        "3D view: map redrawn %.2f times/s, repainted %.2f times/s, at most %zu map points "
+        "held (for at most %zu voxels); peak resident memory (VmHWM) %.0f MB\n",
+        sorted.size(), worst, p99, median, run_s, redraws_per_s, paints_per_s, most_map_points,
+        most_map_voxels, peakResidentMb());
   }
   return status;
 }

@@ -1,7 +1,7 @@
 // The 3D view's inspection tools on data made here, under Xvfb (the view needs OpenGL): the
 // scale bar follows the zoom, the clip box and the cross-section draw only what lies in them,
 // the mesh is coloured by the chosen value, a result's layers built on a worker are shown as
-// they are, and picks are marked.
+// they are, picks are marked, and a map past the view's budget of points is held coarser.
 #include <QDoubleSpinBox>
 #include <QtTest>
 #include <cmath>
@@ -13,6 +13,7 @@
 #include "vtk_gl_widget.h"
 
 using sonarcarve::widgets::ClipDialog;
+using sonarcarve::widgets::MapLod;
 using sonarcarve::widgets::MapView;
 using sonarcarve::widgets::MapViewBlock;
 using sonarcarve::widgets::ScaleBar;
@@ -222,6 +223,73 @@ class InspectionTest : public QObject {
     view.flush();
     QCOMPARE(view.provisionalPointCount(), std::size_t{0});
     QCOMPARE(view.settledPointCount(), std::size_t{kSide * kSide * kSide});
+  }
+
+  // Past its budget of points the view holds the blocks changed longest ago coarser: it holds
+  // at most the budget, still counts every voxel, draws a point of every block, and a pick on
+  // a coarser point says it is the mean of several voxels. Within the budget it holds them all.
+  void mapPastTheBudgetIsHeldCoarser() {
+    MapView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setVoxelSize(0.1);  // the cube's spacing
+    constexpr std::size_t kBudget = 2000;
+    view.setMapPointBudget(kBudget);
+    auto blocks = cubeBlocks();  // a block per north slice, the southernmost sent first
+    for (std::size_t n = 0; n < blocks.size(); ++n) {
+      blocks[n].frames_done = 4 * n;
+      view.applyBlocks({blocks[n]});
+    }
+    view.flush();
+    QCOMPARE(view.mapPointCount(), std::size_t{kSide * kSide * kSide});
+    QVERIFY(view.heldMapPointCount() <= kBudget);
+    // Fewer voxels than kMaxDrawnMapPoints: every point held is drawn.
+    QCOMPARE(view.drawnPointCount(), view.heldMapPointCount());
+    const std::vector<Eigen::Vector3f> drawn = view.drawnPoints();
+    for (int n = 0; n < kSide; ++n) {
+      QVERIFY2(
+          std::any_of(drawn.begin(), drawn.end(),
+                      [&](const Eigen::Vector3f& p) { return std::abs(p.x() - 0.1f * n) < 0.05f; }),
+          qPrintable(QString("slice %1 not drawn").arg(n)));
+    }
+    // The southernmost slice, sent first, is the coarsest and the nearest to the camera.
+    view.viewFromSide();
+    const auto front = std::min_element(
+        drawn.begin(), drawn.end(),
+        [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) { return a.x() < b.x(); });
+    const QString text = view.pickAt(view.screenPositionOf(front->cast<double>()));
+    QVERIFY2(text.startsWith("N 0.00") && text.contains("voxels)"), qPrintable(text));
+
+    view.setMapPointBudget(MapLod::kDefaultMaxPoints);
+    view.clearMap();
+    view.applyBlocks(cubeBlocks());
+    view.flush();
+    QCOMPARE(view.heldMapPointCount(), std::size_t{kSide * kSide * kSide});
+    QCOMPARE(view.drawnPointCount(), std::size_t{kSide * kSide * kSide});
+  }
+
+  // The depth scale spans the map's depths, whether every block is settled or some are
+  // provisional (the empty part's 0 to 1 is not in it).
+  void depthScaleSpansTheMapsDepths() {
+    MapView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setColourBy(MapView::ColourBy::Depth);
+    auto blocks = cubeBlocks();
+    for (auto& b : blocks) {
+      for (auto& p : b.points) {
+        p.z() += 10.0f;
+      }
+    }
+    view.applyBlocks(blocks);
+    view.flush();
+    QCOMPARE(view.legendText(), QString("depth (m): 10.00 to 12.00"));
+    view.setLive(true);
+    view.flush();
+    QCOMPARE(view.provisionalPointCount(), std::size_t{kSide * kSide * kSide});
+    QCOMPARE(view.legendText(), QString("depth (m): 10.00 to 12.00"));
   }
 
   // The dialog starts from the clip in force and gives back what was typed.
