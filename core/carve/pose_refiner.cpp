@@ -93,8 +93,11 @@ PoseRefiner::PoseRefiner(const VoxelMap& map, const SonarModel& sonar, const Car
   }
 }
 
-std::vector<float> PoseRefiner::leadingEdges(const cv::Mat& image) const {
-  // Rows are range bins (near to far), columns beams: the near edge of the first lit bin.
+std::vector<float> PoseRefiner::leadingEdges(const cv::Mat& image,
+                                             const EdgeWidening& widening) const {
+  // Rows are range bins (near to far), columns beams: the near edge of the first lit bin. Behind
+  // a detector, only one that begins a return (two of its first three bins lit: a lone speckle
+  // the detector let through is not a surface); without one every lit pixel is a return.
   std::vector<float> edges(static_cast<std::size_t>(image.cols), kNoReturn);
   const float threshold = litLevel();
   const float bin_min = geometry_.binMin();
@@ -104,19 +107,41 @@ std::vector<float> PoseRefiner::leadingEdges(const cv::Mat& image) const {
   const BearingTable& bearings = geometry_.sonar().bearings();
   const double left = bearings.centre(0) + kBearingMargin_rad;
   const double right = bearings.centre(bearings.count() - 1) - kBearingMargin_rad;
-  const auto inside = [&](int beam) {
-    return bearings.centre(beam) >= left && bearings.centre(beam) <= right;
+  const bool exact = carve_.dark_pixels == CarveParams::DarkPixels::Exact;
+  const auto lit = [&](int r, int c) {
+    return r < image.rows && image.at<float>(r, c) > threshold;
   };
   for (int c = 0; c < image.cols; ++c) {
+    if (bearings.centre(c) < left || bearings.centre(c) > right) {
+      continue;
+    }
     for (int r = 0; r < image.rows; ++r) {
       const float range = bin_min + resolution * static_cast<float>(r);
-      if (range >= r_min && image.at<float>(r, c) > threshold && inside(c)) {
+      if (range >= r_min && lit(r, c) && (exact || lit(r + 1, c) || lit(r + 2, c))) {
         edges[static_cast<std::size_t>(c)] = range;
         break;
       }
     }
   }
-  return edges;
+  if (widening.bins <= 0 && widening.beams <= 0) {
+    return edges;
+  }
+  // The edges of the frame with its returns widened as the map's frames were: the nearest
+  // edge within `beams` either side, `bins` nearer.
+  std::vector<float> widened(edges.size(), kNoReturn);
+  const int n = static_cast<int>(edges.size());
+  const float nearer = resolution * static_cast<float>(std::max(widening.bins, 0));
+  for (int c = 0; c < n; ++c) {
+    if (bearings.centre(c) < left || bearings.centre(c) > right) {
+      continue;
+    }
+    float edge = kNoReturn;
+    for (int k = std::max(0, c - widening.beams); k <= std::min(n - 1, c + widening.beams); ++k) {
+      edge = std::min(edge, edges[static_cast<std::size_t>(k)]);
+    }
+    widened[static_cast<std::size_t>(c)] = edge < kNoReturn ? std::max(edge - nearer, r_min) : edge;
+  }
+  return widened;
 }
 
 std::vector<Eigen::Vector4f> PoseRefiner::voxelsInView(const Eigen::Isometry3d& T_world_sonar,
@@ -238,7 +263,7 @@ double PoseRefiner::meanCostOf(const cv::Mat& image, const Eigen::Isometry3d& T_
                                const PoseCorrection& correction, double scale_m) const {
   const std::vector<Eigen::Vector4f> q =
       voxelsInView(correction.applied(T_world_sonar_nav), T_world_sonar_nav, keepBehind(scale_m));
-  const std::vector<float> measured = leadingEdges(image);
+  const std::vector<float> measured = leadingEdges(image, {});
   return cost(measured, q, T_world_sonar_nav, correction.vector(), scale_m) /
          static_cast<double>(measured.size());
 }
@@ -256,7 +281,8 @@ float PoseRefiner::litLevel() const {
 
 PoseMeasurement PoseRefiner::measure(const cv::Mat& image,
                                      const Eigen::Isometry3d& T_world_sonar_nav,
-                                     const Vector6d& start, double scale_m) const {
+                                     const Vector6d& start, double scale_m,
+                                     const EdgeWidening& widening) const {
   const SonarModel& sonar = geometry_.sonar();
   if (image.type() != CV_32F || image.rows != sonar.rows() || image.cols != sonar.cols()) {
     throw Error("pose refinement", "frame", "image does not match the sonar model");
@@ -270,7 +296,7 @@ PoseMeasurement PoseRefiner::measure(const cv::Mat& image,
   if (q.size() < params_.min_voxels) {
     return m;
   }
-  const std::vector<float> measured = leadingEdges(image);
+  const std::vector<float> measured = leadingEdges(image, widening);
   const double cap = scale_m * scale_m;
   const auto objective = [&](const Vector6d& x) {
     return cost(measured, q, T_world_sonar_nav, x, scale_m);

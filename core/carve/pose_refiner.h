@@ -46,8 +46,10 @@ struct PoseRefinementParams {
   double step_sigma_m = 0.02;
   double step_sigma_rad = degToRad(0.2);
   /// The first alignment map is carved from frames whose lit returns are widened by this much
-  /// in range and across beams, so that true surface survives views this far off each other.
-  double first_pass_tolerance_m = 0.08;
+  /// in range and across beams, so that true surface survives views this far off each other:
+  /// about 2.5 times the relative drift of the frames that see one voxel (a 1 cm random walk
+  /// over the ~36 frames 10 cm apart that see a voxel 4.5 m off inside the main lobe: 6 cm).
+  double first_pass_tolerance_m = 0.16;
   /// Alignment passes (carve, align every frame, smooth the track), before the final carving.
   int passes = 2;
   /// Fewer shell voxels in view: the frame gives no measurement (the track carries it).
@@ -74,6 +76,13 @@ struct PoseCorrection {
   static PoseCorrection of(const Vector6d& x);
 };
 
+/// How far the frames that carved the map had their lit returns widened (grey dilation): a
+/// frame's measured leading edges are widened alike before they are compared with it.
+struct EdgeWidening {
+  int bins = 0;   ///< range bins nearer
+  int beams = 0;  ///< beams either side
+};
+
 /// One frame against the map: the best correction in the window and its information (the
 /// inverse covariance; metres and radians; positive semi-definite, zero when not aligned).
 struct PoseMeasurement {
@@ -90,9 +99,10 @@ class PoseRefiner {
   /// Where the frame (CV_32F, the sonar's rows x cols, as given to the carver) seen from the
   /// navigation's `T_world_sonar_nav` best meets the map, searched from `start` (a correction
   /// of the navigation) with residuals capped at `scale_m` (the map's expected error); never
-  /// outside the window.
+  /// outside the window. `widening`: that of the frames that carved the map.
   PoseMeasurement measure(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar_nav,
-                          const Vector6d& start, double scale_m) const;
+                          const Vector6d& start, double scale_m,
+                          const EdgeWidening& widening = {}) const;
   /// The cost per beam with a return of `correction` (what measure() minimises, for tests).
   double meanCostOf(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar_nav,
                     const PoseCorrection& correction, double scale_m) const;
@@ -102,9 +112,9 @@ class PoseRefiner {
 
  private:
   static constexpr float kNoReturn = std::numeric_limits<float>::infinity();
-  /// Range of each beam's first lit bin (its near edge), kNoReturn where the beam is dark or
-  /// near the fan's edges.
-  std::vector<float> leadingEdges(const cv::Mat& image) const;
+  /// Range of each beam's first return (near edge of its first lit bin), kNoReturn where the
+  /// beam is dark or near the fan's edges; widened as `widening` says.
+  std::vector<float> leadingEdges(const cv::Mat& image, const EdgeWidening& widening) const;
   /// Shell voxels inside the view from `T_world_sonar` (with margins) and no deeper than
   /// `keep_behind_m` behind the nearest of their beam, in the frame of `T_world_frame`.
   std::vector<Eigen::Vector4f> voxelsInView(const Eigen::Isometry3d& T_world_sonar,

@@ -40,8 +40,7 @@ std::vector<PoseCorrection> refineTrack(const TrackRefinementSetup& setup,
       referenceRange(setup.sonar) * bearings.fieldOfView() / static_cast<double>(bearings.count());
   std::vector<Vector6d> track(frames.size(), Vector6d::Zero());
   std::vector<PoseMeasurement> measured(frames.size());
-  CarveParams carve = setup.carve;
-  carve.keep_view_counts = false;
+  const CarveParams& carve = setup.carve;
   double tolerance = params.first_pass_tolerance_m;
   for (int pass = 0; pass < params.passes; ++pass, tolerance *= 0.5) {
     const int bins = static_cast<int>(std::lround(tolerance / resolution));
@@ -50,7 +49,7 @@ std::vector<PoseCorrection> refineTrack(const TrackRefinementSetup& setup,
     if (carver->blockMap() == nullptr) {
       throw Error("parameters", "pose_refinement", "pose refinement needs the fast engine");
     }
-    const std::string stage = "pose refinement " + std::to_string(pass + 1);
+    const std::string stage = "align " + std::to_string(pass + 1);
     for (std::size_t n = 0; n < frames.size(); ++n) {
       if (progress.cancelled()) {
         return {};
@@ -80,7 +79,8 @@ std::vector<PoseCorrection> refineTrack(const TrackRefinementSetup& setup,
       } catch (const Error&) {
         continue;  // not measured: the track carries it
       }
-      measured[n] = refiner.measure(frame.image, frames[n].T_world_sonar, track[n], scale);
+      measured[n] = refiner.measure(frame.image, frames[n].T_world_sonar, track[n], scale,
+                                    EdgeWidening{bins, beams});
       progress.report(stage, frames.size() + n + 1, 2 * frames.size());
     }
     track = smoothCorrectionTrack(measured, params);

@@ -5,7 +5,9 @@
 //      frame only carves where the image is dark that far around: true surface survives views
 //      placed that far off each other, and the map is fat but complete.
 //   2. Measure every frame against that map (carve/pose_refiner.h), searched from its current
-//      correction, with leading edges smoothed as widely as the map is fat.
+//      correction, its measured leading edges widened as the map's frames were (compared like
+//      with like: without drift a frame agrees with the fat map at its own pose), residuals
+//      capped at the tolerance.
 //   3. Solve the correction track from all measurements and the navigation's random-walk model
 //      (carve/track_smoother.h), then carve again; `passes` times, each pass's tolerance half
 //      the one before.
