@@ -46,14 +46,12 @@ struct CarveParams {
   /// votes tolerate views placed a little off by their navigation; they carve ghosts and
   /// noise later.
   int carve_votes = 1;
-  /// Keep each voxel's view counts even with one carve vote (pose refinement reads them).
-  bool keep_view_counts = false;
 };
 
 /// Whether a map carved with `params` keeps each voxel's view and vote counts (2 bytes a
 /// voxel more in every block that holds values).
 inline bool keepsViewCounts(const CarveParams& params) {
-  return params.carve_votes > 1 || params.keep_view_counts;
+  return params.carve_votes > 1;
 }
 
 }  // namespace sonarcarve

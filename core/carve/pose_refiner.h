@@ -1,26 +1,25 @@
-// PoseRefiner: aligns each frame to the map carved so far, before the frame carves it (issue
-// 15). Minimum carving needs every view to agree to the voxel: a frame placed a centimetre
-// off by drifting navigation carves true surface away. The refiner scores a candidate pose by
-// where the map's settled voxels (occupied, observed by several views from both sides of their
-// axes, so that the sonar's axis has passed over them, well inside the view at the
-// search's start: the same voxels for every candidate) fall in the frame:
-//   +1 on a lit pixel at the leading edge of a return (the first lit range bins after dark
-//      water along the beam: where a surface facing the sonar shows itself),
-//   -1 on the dark pixels just before a leading edge (water in front of a surface),
-//    0 elsewhere: deeper in a return (the far part of an elevation arc) and in dark water
-//      away from any return (where the map's ghosts lie, which this frame will carve: they
-//      must not pull the frame to where they would be lit),
-// smoothed over a range bin, and searches a bounded window around the
-// navigation prior for the best score: a pattern search over the three position axes (world)
-// and the three rotations about the sonar's own axes, coarse to fine (two voxels to half a
-// voxel). The prior along the track: each frame starts from the previous frame's correction
-// (navigation drifts as a random walk) and pays for every change from it in proportion to its
-// square over the expected drift per frame. A frame with too few settled voxels in view keeps the
-// carried correction. Works on the fast engine's VoxelMap; not thread safe (the carving stage calls
-// it between frames), the scoring runs on the pool.
+// PoseRefiner: measures where a frame sits against a COMPLETE map, carved from every frame of
+// the mission (issue 15; the carving stage's post-processing refinement,
+// pipeline/track_refinement.h). Minimum carving needs every view to agree to the voxel: a
+// frame placed a centimetre off by drifting navigation carves true surface away.
+// The refiner predicts the frame's leading edges from the map: for a candidate pose, each
+// beam's nearest shell voxel (occupied, with a face neighbour that is not) inside the carved
+// elevation lobe is where that beam's first return should begin. It compares them with the
+// frame's measured leading edges (the first lit range bin of each beam), two-sided: the cost
+// is the sum over beams of the squared difference, capped at a robust scale (the map's
+// expected error), and a beam where only one of the two has a return costs the cap (a
+// structure's silhouette across the beams). The search is a pattern search over the three
+// position axes (world) and the three rotations about the sonar's own axes, coarse to fine,
+// inside a bounded window around the navigation. Its result is a measurement: the best
+// correction and its information (how sharply the cost rises around it, per axis and between
+// axes: a direction the frame does not observe, down along a vertical pipe, gets none), which
+// the track smoother (carve/track_smoother.h) combines over all frames.
+// The map must not change while the refiner lives; one measure() at a time (its costs run on
+// the pool).
 #pragma once
 
 #include <Eigen/Geometry>
+#include <limits>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -32,25 +31,31 @@
 
 namespace sonarcarve {
 
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
 struct PoseRefinementParams {
-  /// Whether the carving stage refines poses at all. Experimental, off by default: on the
-  /// simulated drifted missions it does not yet beat carving at the navigation's poses
-  /// (docs/navigation.md).
+  /// Whether the carving stage refines poses at all. Off by default: it improves drifted
+  /// missions but costs about 0.04 F without drift (docs/navigation.md).
   bool enabled = false;
-  /// The search window around the navigation prior, on each axis.
+  /// The search window around the navigation, on each axis: no refined pose leaves it.
   double max_translation_m = 0.5;
   double max_rotation_rad = degToRad(5.0);
-  /// The prior along the track: how far navigation is expected to drift from one frame to
-  /// the next (one standard deviation, on each axis).
+  /// The navigation's error model, a random walk: how far it is expected to drift from one
+  /// frame to the next (one standard deviation, on each axis).
   double step_sigma_m = 0.02;
   double step_sigma_rad = degToRad(0.2);
-  /// A voxel takes part once this many views (at most 63) have observed it, from both sides
-  /// of their axes, and it is still occupied.
-  int settled_views = 8;
-  /// Fewer settled voxels in view: the frame is not aligned (it keeps the carried correction).
-  std::size_t min_settled_voxels = 200;
-  /// At most this many settled voxels are scored (evenly thinned beyond).
-  std::size_t max_voxels = 30000;
+  /// The first alignment map is carved from frames whose lit returns are widened by this much
+  /// in range and across beams, so that true surface survives views this far off each other:
+  /// about 2.5 times the relative drift of the frames that see one voxel (a 1 cm random walk
+  /// over the ~36 frames 10 cm apart that see a voxel 4.5 m off inside the main lobe: 6 cm).
+  double first_pass_tolerance_m = 0.16;
+  /// Alignment passes (carve, align every frame, smooth the track), before the final carving.
+  int passes = 2;
+  /// Fewer shell voxels in view: the frame gives no measurement (the track carries it).
+  std::size_t min_voxels = 200;
+  /// At most this many shell voxels are scored (evenly thinned beyond).
+  std::size_t max_voxels = 20000;
 };
 
 /// The correction of one frame: its sonar's position moved by `translation_world_m` and its
@@ -58,48 +63,81 @@ struct PoseRefinementParams {
 struct PoseCorrection {
   Eigen::Vector3d translation_world_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d rotation_sonar_rad = Eigen::Vector3d::Zero();
-  bool aligned = false;       ///< false: too few settled voxels in view; carried over
-  std::size_t voxels = 0;     ///< settled voxels scored
-  double score_before = 0.0;  ///< score per scored voxel at the carried correction
-  double score_after = 0.0;   ///< at the chosen one
+  bool aligned = false;    ///< false: no measurement (too few voxels or no agreement)
+  std::size_t voxels = 0;  ///< shell voxels scored
+  /// Agreement of the frame with the map: 1 - the mean over beams with a return of the squared
+  /// difference of predicted and measured leading edges, capped, over the cap (1: every edge
+  /// predicted exactly); at the navigation's pose and at the chosen correction.
+  double score_before = 0.0;
+  double score_after = 0.0;
 
   Eigen::Isometry3d applied(const Eigen::Isometry3d& T_world_sonar_prior) const;
+  Vector6d vector() const;
+  static PoseCorrection of(const Vector6d& x);
+};
+
+/// How far the frames that carved the map had their lit returns widened (grey dilation): a
+/// frame's measured leading edges are widened alike before they are compared with it.
+struct EdgeWidening {
+  int bins = 0;   ///< range bins nearer
+  int beams = 0;  ///< beams either side
+};
+
+/// One frame against the map: the best correction in the window and its information (the
+/// inverse covariance; metres and radians; positive semi-definite, zero when not aligned).
+struct PoseMeasurement {
+  PoseCorrection correction;
+  Matrix6d information = Matrix6d::Zero();
 };
 
 class PoseRefiner {
  public:
+  /// Gathers the map's shell voxels once. Throws Error on a negative window.
   PoseRefiner(const VoxelMap& map, const SonarModel& sonar, const CarveParams& carve,
               PoseRefinementParams params, ThreadPool& pool);
 
-  /// The correction of a frame (CV_32F, the sonar's rows x cols, as given to the carver) seen
-  /// from `T_world_sonar_prior`, starting from the previous frame's correction; never outside
-  /// the window.
-  PoseCorrection refine(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar_prior);
-  /// The score per voxel of `correction` for a frame: the voxels are those well inside the
-  /// view from the prior (what refine() maximises, for diagnostics and tests).
-  double scoreOf(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar_prior,
-                 const PoseCorrection& correction) const;
+  /// Where the frame (CV_32F, the sonar's rows x cols, as given to the carver) seen from the
+  /// navigation's `T_world_sonar_nav` best meets the map, searched from `start` (a correction
+  /// of the navigation) with residuals capped at `scale_m` (the map's expected error); never
+  /// outside the window. `widening`: that of the frames that carved the map.
+  PoseMeasurement measure(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar_nav,
+                          const Vector6d& start, double scale_m,
+                          const EdgeWidening& widening = {}) const;
+  /// The cost per beam with a return of `correction` (what measure() minimises, for tests).
+  double meanCostOf(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar_nav,
+                    const PoseCorrection& correction, double scale_m) const;
+  /// A correction clamped into the window.
+  Vector6d clamped(Vector6d x) const;
+  std::size_t shellVoxels() const { return shell_.size(); }
 
  private:
-  struct Candidate {
-    Eigen::Matrix<double, 6, 1> x;  // translation (world), rotation (sonar axes)
-    double score = 0.0;
-  };
-  cv::Mat edgeField(const cv::Mat& image) const;
-  /// Settled voxels well inside the view from `T_world_sonar`, in the frame of `T_world_frame`.
-  std::vector<Eigen::Vector3f> settledVoxels(const Eigen::Isometry3d& T_world_sonar,
-                                             const Eigen::Isometry3d& T_world_frame) const;
-  double score(const cv::Mat& field, const std::vector<Eigen::Vector3f>& q_sonar,
-               const Eigen::Isometry3d& T_world_sonar_prior,
-               const Eigen::Matrix<double, 6, 1>& x) const;
-  Eigen::Matrix<double, 6, 1> clamped(Eigen::Matrix<double, 6, 1> x) const;
+  static constexpr float kNoReturn = std::numeric_limits<float>::infinity();
+  /// Range of each beam's first return (near edge of its first lit bin), kNoReturn where the
+  /// beam is dark or near the fan's edges; widened as `widening` says.
+  std::vector<float> leadingEdges(const cv::Mat& image, const EdgeWidening& widening) const;
+  /// Shell voxels inside the view from `T_world_sonar` (with margins) and no deeper than
+  /// `keep_behind_m` behind the nearest of their beam, in the frame of `T_world_frame`.
+  std::vector<Eigen::Vector4f> voxelsInView(const Eigen::Isometry3d& T_world_sonar,
+                                            const Eigen::Isometry3d& T_world_frame,
+                                            double keep_behind_m) const;
+  double keepBehind(double scale_m) const;
+  /// The intensity over which a pixel is lit, as carving keeps it.
+  float litLevel() const;
+  /// Sum over beams of the squared difference between predicted and measured leading edges,
+  /// each capped at scale^2 (a beam where only one has a return costs scale^2).
+  double cost(const std::vector<float>& measured, const std::vector<Eigen::Vector4f>& q_sonar,
+              const Eigen::Isometry3d& T_world_sonar_nav, const Vector6d& x, double scale_m) const;
 
-  const VoxelMap& map_;
   CarvingGeometry geometry_;
   CarveParams carve_;
   PoseRefinementParams params_;
   ThreadPool& pool_;
-  Eigen::Matrix<double, 6, 1> carried_ = Eigen::Matrix<double, 6, 1>::Zero();
+  double voxel_size_m_;
+  std::vector<Eigen::Vector3f> shell_;  // world
+  std::vector<float> shell_values_;     // their on-axis values
+  static constexpr std::size_t kPowerTable = 1024;
+  std::vector<float> power_;  // the beam's power over |sin(elevation)|
+  float max_sin_elevation_ = 0.0f;
 };
 
 }  // namespace sonarcarve

@@ -2,13 +2,13 @@
 
 #include <chrono>
 #include <cmath>
-#include <optional>
 
 #include "carve/carving_geometry.h"
 #include "carve/map_file.h"
 #include "common/error.h"
 #include "occlusion/occlusion_resolver.h"
 #include "pipeline/size_limits.h"
+#include "pipeline/track_refinement.h"
 
 namespace sonarcarve {
 namespace {
@@ -50,7 +50,6 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
   CarveStageResult result;
   result.carve = params_.carve;
   result.carve.region = bounds;
-  result.carve.keep_view_counts = params_.refinement.enabled;
   result.carver = makeCarver(params_.engine, CarverSetup{sonar_, result.carve, pool_});
   if (params_.earlier_map) {
     result.carver->fuse(*params_.earlier_map);
@@ -60,9 +59,15 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
     progress.report("carve", frames.size(), frames.size());
     return result;
   }
-  std::optional<PoseRefiner> refiner;
+  std::vector<PoseCorrection> corrections;
   if (params_.refinement.enabled && result.carver->blockMap() != nullptr) {
-    refiner.emplace(*result.carver->blockMap(), sonar_, result.carve, params_.refinement, pool_);
+    corrections = refineTrack(
+        TrackRefinementSetup{sonar_, params_.engine, result.carve, params_.refinement, pool_},
+        frames, source, progress);
+    if (corrections.empty()) {
+      result.cancelled = true;
+      return result;
+    }
   }
   for (std::size_t n = 0; n < frames.size(); ++n) {
     if (progress.cancelled()) {
@@ -78,9 +83,8 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
       continue;
     }
     const auto t0 = Clock::now();
-    if (refiner) {
-      FramePoseRefinement r{f.index, f.T_world_sonar,
-                            refiner->refine(frame.image, f.T_world_sonar)};
+    if (!corrections.empty()) {
+      const FramePoseRefinement r{f.index, f.T_world_sonar, corrections[n]};
       f.T_world_sonar = r.correction.applied(r.T_world_sonar_prior);
       result.refinement.push_back(r);
     }

@@ -304,9 +304,9 @@ std::vector<ParamSpec> makeSchema() {
 
       // Navigation.
       {.key = "pose_refinement.enabled",
-       .help = "fast engine: align each frame to the map carved so far, within a window around "
-               "its navigation, before it carves (drifting navigation); false: carve at the "
-               "navigation's poses",
+       .help = "fast engine: carve the mission, align every frame to that map within a window "
+               "around its navigation, solve the track, carve again (drifting navigation); "
+               "false: carve at the navigation's poses",
        .flag = "--pose-refinement",
        .gui = {.group = "Navigation", .label = "Pose refinement"},
        .access = field([](auto& p) -> auto& { return p.pose_refinement.enabled; }),
@@ -341,15 +341,35 @@ std::vector<ParamSpec> makeSchema() {
                .suffix = "°"},
        .access = field([](auto& p) -> auto& { return p.pose_refinement.max_rotation_rad; }),
        .applies = refinesPoses},
-      {.key = "pose_refinement.settled_views",
-       .unit = "views",
-       .range = {.min = 1.0, .max = 63.0},
-       .help = "pose refinement: a voxel guides the alignment once this many views have "
-               "observed it, from both sides of their axes, and it is still occupied",
-       .flag = "--refine-settled-views",
-       .gui =
-           {.group = "Navigation", .label = "Settled after", .advanced = true, .min = 1, .max = 63},
-       .access = field([](auto& p) -> auto& { return p.pose_refinement.settled_views; }),
+      {.key = "pose_refinement.first_pass_tolerance_m",
+       .unit = "m",
+       .range = kNonNegative,
+       .help = "pose refinement: the first alignment map is carved from frames whose returns are "
+               "widened by this much in range and across beams, so that true surface survives "
+               "views this far off each other",
+       .flag = "--refine-tolerance",
+       .gui = {.group = "Navigation",
+               .label = "First-pass tolerance",
+               .advanced = true,
+               .max = 50,
+               .step = 1,
+               .decimals = 1,
+               .factor = 100,
+               .suffix = " cm"},
+       .access = field([](auto& p) -> auto& { return p.pose_refinement.first_pass_tolerance_m; }),
+       .applies = refinesPoses},
+      {.key = "pose_refinement.passes",
+       .unit = "passes",
+       .range = {.min = 1.0, .max = 8.0},
+       .help = "pose refinement: how often the mission is carved, every frame aligned to that map "
+               "and the track solved, before the final carving (each pass halves the tolerance)",
+       .flag = "--refine-passes",
+       .gui = {.group = "Navigation",
+               .label = "Alignment passes",
+               .advanced = true,
+               .min = 1,
+               .max = 8},
+       .access = field([](auto& p) -> auto& { return p.pose_refinement.passes; }),
        .applies = refinesPoses},
 
       // Frames.

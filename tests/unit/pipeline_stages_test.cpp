@@ -3,6 +3,8 @@
 // occlusion resolution with its view count, and the mesh stage's lower limit.
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "common/angles.h"
 #include "common/error.h"
 #include "io/frame_source.h"
@@ -119,6 +121,38 @@ TEST_F(CarveStageTest, ABrokenFrameIsSkippedAndTheOthersCarved) {
   EXPECT_NE(skipped.problems[1].message.find("broken on purpose"), std::string::npos);
   EXPECT_GT(r.carver->stats().occupied_voxels, 0u);
   ASSERT_TRUE(r.carve.region);  // the map's bounds, as used
+}
+
+TEST_F(CarveStageTest, WithPoseRefinementOffFramesCarveExactlyAtTheirNavigationPoses) {
+  // Refinement off (the default) is the carving of before: the same frames carved by hand at
+  // the navigation's poses give the same map, voxel for voxel.
+  const Mission mission = ringMission(8);
+  Skipped skipped;
+  SilentProgress progress;
+  const CarveStageResult r = carve(mission, progress, skipped);
+  EXPECT_TRUE(r.refinement.empty());
+  const auto posed = placeFrames(mission, {}, skipped.sink());
+  NoiseChoice none;
+  none.detector = detector_;
+  const DenoisedFrames frames(mission, mission.sonar, none);
+  auto by_hand = makeCarver(CarverEngine::Fast, CarverSetup{mission.sonar, r.carve, pool_});
+  for (std::size_t n = 0; n < posed.size(); ++n) {
+    by_hand->integrate(frames.load(posed[n].index).image, posed[n].T_world_sonar,
+                       static_cast<std::uint32_t>(n + 1));
+  }
+  const VoxelMap* a = r.carver->blockMap();
+  const VoxelMap* b = by_hand->blockMap();
+  if (a == nullptr || b == nullptr) {
+    FAIL() << "the fast engine keeps a block map";
+  }
+  ASSERT_EQ(a->blockCount(), b->blockCount());
+  std::array<float, VoxelMap::kBlockVoxels> va{}, vb{};
+  for (std::size_t block = 0; block < a->blockCount(); ++block) {
+    a->copyValues(block, va.data());
+    b->copyValues(block, vb.data());
+    ASSERT_EQ(va, vb) << "block " << block;
+  }
+  EXPECT_GT(a->occupiedCount(), 0u);
 }
 
 class StopAfter final : public Progress {

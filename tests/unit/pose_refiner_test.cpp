@@ -19,6 +19,8 @@ namespace sonarcarve {
 namespace {
 
 constexpr double kVoxel = CarveParams::kDefaultVoxelSize_m;
+// Residuals are capped beyond the largest displacement tried (1 degree: 8 cm at the riser).
+constexpr double kScale = 0.1;
 
 // Views of the riser demo scene's module and tie-backs (14 to 15.5 m deep): a level sonar
 // 4.5 m south of the riser's axis, stepping down 10 cm a frame, as the paper's inspection.
@@ -54,6 +56,7 @@ class PoseRefinement : public ::testing::Test {
 
   static CarveParams params() {
     CarveParams p;
+    p.beam_aware = false;  // the frames are rendered with the clipped beam: the paper's rule
     p.region =
         Eigen::AlignedBox3d(Eigen::Vector3d(-1.5, -3.0, 11.0), Eigen::Vector3d(1.5, 3.0, 17.5));
     return p;
@@ -92,8 +95,9 @@ Eigen::Isometry3d displaced(const Eigen::Isometry3d& T, const Eigen::Vector3d& s
 
 TEST_F(PoseRefinement, AFrameDisplacedByAKnownOffsetIsPulledBackToWithinAVoxel) {
   const CarveParams p = params();
-  VoxelMap map(p.voxel_size_m, *p.region, true);
+  VoxelMap map(p.voxel_size_m, *p.region);
   carveAllButHeldOut(map, p);
+  const PoseRefiner refiner(map, *sonar_, p, PoseRefinementParams{}, *pool_);
   const Eigen::Isometry3d truth = truePose(kHeldOut);
   const cv::Mat& image = (*images_)[kHeldOut];
   struct Offset {
@@ -104,10 +108,10 @@ TEST_F(PoseRefinement, AFrameDisplacedByAKnownOffsetIsPulledBackToWithinAVoxel) 
   for (const Offset& o : {Offset{{0.06, 0.0, 0.0}, 0.0}, Offset{{-0.06, 0.0, 0.0}, 0.0},
                           Offset{{0.0, 0.06, 0.0}, 0.0}, Offset{{0.0, 0.0, 0.0}, 1.0},
                           Offset{{0.04, -0.04, 0.0}, -0.5}}) {
-    PoseRefiner refiner(map, *sonar_, p, PoseRefinementParams{}, *pool_);
     const Eigen::Isometry3d prior = displaced(truth, o.shift, degToRad(o.yaw_deg));
-    const PoseCorrection c = refiner.refine(image, prior);
-    ASSERT_TRUE(c.aligned) << "settled voxels in view: " << c.voxels;
+    const PoseCorrection c = refiner.measure(image, prior, Vector6d::Zero(), kScale).correction;
+    ASSERT_TRUE(c.aligned) << "shell voxels in view: " << c.voxels << ", agreement "
+                           << c.score_after;
     const Eigen::Isometry3d refined = c.applied(prior);
     // Where the refined pose puts the riser's near face (4.5 m ahead) against the truth: a
     // turn moves it by its arc there.
@@ -122,17 +126,19 @@ TEST_F(PoseRefinement, AFrameDisplacedByAKnownOffsetIsPulledBackToWithinAVoxel) 
 
 TEST_F(PoseRefinement, TheRefinedPoseNeverLeavesTheSearchWindow) {
   const CarveParams p = params();
-  VoxelMap map(p.voxel_size_m, *p.region, true);
+  VoxelMap map(p.voxel_size_m, *p.region);
   carveAllButHeldOut(map, p);
   PoseRefinementParams window;
   window.max_translation_m = 0.03;
   window.max_rotation_rad = degToRad(0.2);
-  PoseRefiner refiner(map, *sonar_, p, window, *pool_);
+  const PoseRefiner refiner(map, *sonar_, p, window, *pool_);
   // Off by more than the window: the best pose lies outside it, so the search stops at its
   // edge (close enough to the truth to agree with the frame).
   const Eigen::Isometry3d prior = displaced(truePose(kHeldOut), {0.05, 0.0, 0.0}, degToRad(0.3));
-  for (int frame = 0; frame < 3; ++frame) {  // the carried correction stays inside too
-    const PoseCorrection c = refiner.refine((*images_)[kHeldOut], prior);
+  Vector6d outside;  // a start outside the window is brought in
+  outside << 0.2, -0.2, 0.0, 0.0, 0.0, degToRad(3.0);
+  for (const Vector6d& start : {Vector6d(Vector6d::Zero()), outside}) {
+    const PoseCorrection c = refiner.measure((*images_)[kHeldOut], prior, start, kScale).correction;
     for (int a = 0; a < 3; ++a) {
       EXPECT_LE(std::abs(c.translation_world_m[a]), window.max_translation_m + 1e-12);
       EXPECT_LE(std::abs(c.rotation_sonar_rad[a]), window.max_rotation_rad + 1e-12);
@@ -143,12 +149,14 @@ TEST_F(PoseRefinement, TheRefinedPoseNeverLeavesTheSearchWindow) {
   }
 }
 
-TEST_F(PoseRefinement, WithTooFewSettledVoxelsAFrameKeepsItsPrior) {
+TEST_F(PoseRefinement, WithTooFewVoxelsInViewAFrameGivesNoMeasurement) {
   const CarveParams p = params();
-  VoxelMap map(p.voxel_size_m, *p.region, true);  // nothing carved yet
-  PoseRefiner refiner(map, *sonar_, p, PoseRefinementParams{}, *pool_);
-  const PoseCorrection c = refiner.refine((*images_)[0], truePose(0));
+  VoxelMap map(p.voxel_size_m, *p.region);  // nothing carved
+  const PoseRefiner refiner(map, *sonar_, p, PoseRefinementParams{}, *pool_);
+  const PoseMeasurement m = refiner.measure((*images_)[0], truePose(0), Vector6d::Zero(), kScale);
+  const PoseCorrection& c = m.correction;
   EXPECT_FALSE(c.aligned);
+  EXPECT_EQ(m.information, Matrix6d::Zero());
   EXPECT_EQ(c.translation_world_m, Eigen::Vector3d::Zero());
   EXPECT_EQ(c.rotation_sonar_rad, Eigen::Vector3d::Zero());
 }
