@@ -223,7 +223,7 @@ int benchCarve(const BenchOptions& o, ThreadPool& pool) {
       {"beam", o.beam},
       {"beam_aware", carvesMainLobe(sonar, params)},
       {"threads", pool.size()},
-      {"map_blocks", map.blockCount()},
+      {"map_blocks", map.boxBlockCount()},
       {"fast_carve_median_ms", carve.median()},
       {"fast_carve_mean_ms", carve.mean()},
       {"fast_carve_cpu_ms_per_frame", carve_cpu_ms},

@@ -60,7 +60,10 @@ void writeOutputs(const std::filesystem::path& out, const Mission& mission,
                   const std::string& report, bool save_map, RunManifest& manifest) {
   writeSurfacePointsPly(result.surface, out / "surface_points.ply");
   manifest.wrote("surface_points.ply");
-  if (result.map) {
+  if (result.evicted) {
+    writeOccupancyBt(result.occupancy, params.carve.voxel_size_m, out / "map.bt");
+    manifest.wrote("map.bt");
+  } else if (result.map) {
     writeOccupancyBt(*result.map, out / "map.bt");
     manifest.wrote("map.bt");
     if (save_map) {
@@ -109,6 +112,9 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   }
   if (!o.load_map.empty()) {
     pipeline.startFrom(loadMap(o.load_map), !o.surface_only);
+  }
+  if (o.save_map) {
+    pipeline.keepWholeMap();  // map.scmap is the whole map
   }
   const std::filesystem::path out(o.out);
   prepareOutputFolder(out);

@@ -71,6 +71,8 @@ class Carver {
   /// The map as blocks with change stamps, for viewers' incremental updates and the OctoMap
   /// export; nullptr for engines that do not keep one.
   virtual const VoxelMap* blockMap() const { return nullptr; }
+  /// The same map, for a run that releases its finished pages (eviction); null otherwise.
+  virtual VoxelMap* evictableMap() { return nullptr; }
   /// Starts from a map carved before (reconstruct --load-map): fuses it by the voxel-wise
   /// minimum where it lies inside this map's box. Throws Error for engines that keep no
   /// block map.

@@ -311,6 +311,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   if (!map_.blockSpan(geometry_.frustumBounds(T_world_sonar, half_elevation), lo, hi)) {
     return {};
   }
+  map_.holdPages(lo, hi);  // before the threads reach the blocks
   const double block = map_.blockSize();
   const Eigen::Vector3i span = hi - lo + Eigen::Vector3i::Ones();
   const auto lines = static_cast<std::size_t>(span.y()) * static_cast<std::size_t>(span.z());

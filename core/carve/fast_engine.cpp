@@ -26,6 +26,7 @@ class FastEngine final : public Carver {
   CarverStats stats() const override { return {map_.occupiedCount(), map_.memoryBytes()}; }
   std::size_t memoryBytes() const override { return map_.memoryBytes(); }
   const VoxelMap* blockMap() const override { return &map_; }
+  VoxelMap* evictableMap() override { return &map_; }
   void fuse(const VoxelMap& earlier) override { fuseInto(map_, earlier); }
 
  private:

@@ -139,12 +139,15 @@ void saveMap(const VoxelMap& map, const std::filesystem::path& path) {
   }
   const std::size_t kept = map.blockCount() - map.blockCount(VoxelMap::BlockState::Unknown);
   put(out, static_cast<std::uint64_t>(kept));
-  for (std::size_t b = 0; b < map.blockCount(); ++b) {
+  // Blocks in the order of the box's rows, by their place in it (the table's pages are not
+  // part of the format).
+  for (std::size_t n = 0; n < map.boxBlockCount(); ++n) {
+    const std::size_t b = map.blockAtRowOrder(n);
     const VoxelMap::BlockState state = map.state(b);
     if (state == VoxelMap::BlockState::Unknown) {
       continue;
     }
-    put(out, static_cast<std::uint64_t>(b));
+    put(out, static_cast<std::uint64_t>(n));
     if (state == VoxelMap::BlockState::Free) {
       put(out, kFree);
     } else {  // Mixed, or Partial written as its values
@@ -213,12 +216,13 @@ std::unique_ptr<VoxelMap> loadMap(const std::filesystem::path& path) {
   std::uint64_t previous = 0;
   for (std::uint64_t n = 0; n < kept; ++n) {
     const std::size_t index_at = r.offset();
-    const auto b = r.get<std::uint64_t>("a block index");
-    if (b >= blocks || (n > 0 && b <= previous)) {
-      r.fail(index_at, "block index " + std::to_string(b) + ": expected increasing indices below " +
-                           std::to_string(blocks));
+    const auto row_order = r.get<std::uint64_t>("a block index");
+    if (row_order >= blocks || (n > 0 && row_order <= previous)) {
+      r.fail(index_at, "block index " + std::to_string(row_order) +
+                           ": expected increasing indices below " + std::to_string(blocks));
     }
-    previous = b;
+    previous = row_order;
+    const std::size_t b = map->blockAtRowOrder(row_order);
     const std::size_t state_at = r.offset();
     const auto state = r.get<std::uint8_t>("a block state");
     if (state == kFree) {

@@ -29,12 +29,15 @@ constexpr int kBlockLevels = 3;  // a block is a subtree of 2^3 voxels a side
 // A node's state; its value is the node's two-bit code in its parent's bytes.
 enum class NodeState : std::uint8_t { Unknown = 0, Free = 1, Occupied = 2, Inner = 3 };
 
-// The exported voxels of one block, as Morton-ordered leaves: leaf m is the voxel whose
-// offsets in the block have the bits of m interleaved (x, y, z).
-struct ExportBlock {
-  std::uint64_t morton = 0;  // of the block's key (voxel key >> 3)
-  std::array<NodeState, VoxelMap::kBlockVoxels> leaves{};
-};
+NodeState leafOf(const OccupancyBlock& block, std::size_t m) {
+  return static_cast<NodeState>((block.leaves[m / 32] >> (2 * (m % 32))) & 3u);
+}
+
+void setLeaf(OccupancyBlock& block, std::size_t m, NodeState state) {
+  std::uint64_t& word = block.leaves[m / 32];
+  const int shift = static_cast<int>(2 * (m % 32));
+  word = (word & ~(std::uint64_t{3} << shift)) | static_cast<std::uint64_t>(state) << shift;
+}
 
 std::uint64_t interleave(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits) {
   std::uint64_t m = 0;
@@ -44,12 +47,14 @@ std::uint64_t interleave(std::uint32_t x, std::uint32_t y, std::uint32_t z, int 
   return m;
 }
 
-std::vector<ExportBlock> exportBlocks(const VoxelMap& map) {
+}  // namespace
+
+void collectOccupancyBlocks(const VoxelMap& map, std::size_t page,
+                            std::vector<OccupancyBlock>& blocks) {
   // Occupied voxels on the shell of occupied space, which come block after block.
   constexpr int kKeyOffset = 32768;
-  std::vector<ExportBlock> blocks;
   std::size_t current = map.blockCount();
-  map.forEachOccupiedOnShell([&](const Eigen::Vector3i& voxel, float) {
+  map.forEachOccupiedOnShellIn(page, [&](const Eigen::Vector3i& voxel, float) {
     const Eigen::Vector3i key = voxel + Eigen::Vector3i::Constant(kKeyOffset);
     const Eigen::Vector3i block_key = key / VoxelMap::kBlockSide;
     const std::size_t index =
@@ -57,7 +62,7 @@ std::vector<ExportBlock> exportBlocks(const VoxelMap& map) {
                        map.firstBlock());
     if (index != current) {
       current = index;
-      ExportBlock block;
+      OccupancyBlock block;
       block.morton = interleave(
           static_cast<std::uint32_t>(block_key.x()), static_cast<std::uint32_t>(block_key.y()),
           static_cast<std::uint32_t>(block_key.z()), kTreeDepth - kBlockLevels);
@@ -66,24 +71,23 @@ std::vector<ExportBlock> exportBlocks(const VoxelMap& map) {
       for (int i = 0; i < VoxelMap::kBlockVoxels; ++i) {
         if (values[i] == 0.0f) {
           const int x = i % 8, y = (i / 8) % 8, z = i / 64;
-          block.leaves[interleave(x, y, z, kBlockLevels)] = NodeState::Free;
+          setLeaf(block, interleave(x, y, z, kBlockLevels), NodeState::Free);
         }
       }
       blocks.push_back(block);
     }
     const Eigen::Vector3i offset = key - block_key * VoxelMap::kBlockSide;
-    blocks.back().leaves[interleave(offset.x(), offset.y(), offset.z(), kBlockLevels)] =
-        NodeState::Occupied;
+    setLeaf(blocks.back(), interleave(offset.x(), offset.y(), offset.z(), kBlockLevels),
+            NodeState::Occupied);
   });
-  std::sort(blocks.begin(), blocks.end(),
-            [](const ExportBlock& a, const ExportBlock& b) { return a.morton < b.morton; });
-  return blocks;
 }
+
+namespace {
 
 // Writes the subtrees below one node depth first and says what the node is.
 class BtWriter {
  public:
-  explicit BtWriter(const std::vector<ExportBlock>& blocks) : blocks_(blocks) {}
+  explicit BtWriter(const std::vector<OccupancyBlock>& blocks) : blocks_(blocks) {}
   std::size_t nodes = 0;  ///< nodes written, the root not included
 
   /// Appends to `out` the node at `level` (0: a voxel) whose key prefix is `prefix`, made of
@@ -99,7 +103,7 @@ class BtWriter {
         const auto first =
             std::lower_bound(blocks_.begin() + static_cast<long>(b),
                              blocks_.begin() + static_cast<long>(e), child_prefix << shift,
-                             [](const ExportBlock& x, std::uint64_t m) { return x.morton < m; });
+                             [](const OccupancyBlock& x, std::uint64_t m) { return x.morton < m; });
         auto last = first;
         while (last != blocks_.begin() + static_cast<long>(e) &&
                (last->morton >> shift) == child_prefix) {
@@ -111,7 +115,7 @@ class BtWriter {
                    static_cast<std::size_t>(last - blocks_.begin()), below[c]);
         }
       } else if (level - 1 == 0) {
-        child[c] = blocks_[b].leaves[child_prefix & 0x1FF];
+        child[c] = leafOf(blocks_[b], child_prefix & 0x1FF);
       } else {
         child[c] = node(level - 1, child_prefix, b, e, below[c]);
       }
@@ -147,13 +151,23 @@ class BtWriter {
   }
 
  private:
-  const std::vector<ExportBlock>& blocks_;
+  const std::vector<OccupancyBlock>& blocks_;
 };
 
 }  // namespace
 
 void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path) {
-  const std::vector<ExportBlock> blocks = exportBlocks(map);
+  std::vector<OccupancyBlock> blocks;
+  for (std::size_t page = 0; page < map.pageCount(); ++page) {
+    collectOccupancyBlocks(map, page, blocks);
+  }
+  writeOccupancyBt(std::move(blocks), map.voxelSize(), path);
+}
+
+void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
+                      const std::filesystem::path& path) {
+  std::sort(blocks.begin(), blocks.end(),
+            [](const OccupancyBlock& a, const OccupancyBlock& b) { return a.morton < b.morton; });
   BtWriter writer(blocks);
   std::string data;
   if (!blocks.empty()) {
@@ -163,7 +177,7 @@ void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path) {
   std::ostringstream header;
   header << "# Octomap OcTree binary file\n"
          << "# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
-         << "id OcTree\nsize " << writer.nodes << "\nres " << map.voxelSize() << "\ndata\n";
+         << "id OcTree\nsize " << writer.nodes << "\nres " << voxel_size_m << "\ndata\n";
   data.insert(0, header.str());
   writeFileAtomically(path, data);
 }

@@ -6,16 +6,35 @@
 // (under a seabed no view could carve, tens of millions of voxels): as octree nodes they
 // would take gigabytes. The file is written without building an octree (the bytes OctoMap's
 // writer would write for the same voxels; memory: the exported blocks, 520 bytes each, and
-// the file).
+// the file). A run that lets finished regions of its map go collects their exported blocks as
+// they go (136 bytes each) and writes the file from them at the end.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "carve/voxel_map.h"
 
 namespace sonarcarve {
 
+/// The exported voxels of one block (the occupied ones on the shell, and the carved ones
+/// beside them) as Morton-ordered leaves of two bits: leaf m is the voxel whose offsets in
+/// the block have the bits of m interleaved (x, y, z).
+struct OccupancyBlock {
+  std::uint64_t morton = 0;  ///< of the block's key (voxel key >> 3)
+  std::array<std::uint64_t, VoxelMap::kBlockVoxels / 32> leaves{};
+};
+
+/// Adds the exported blocks of one page of `map` (its face neighbours' voxels must be final).
+void collectOccupancyBlocks(const VoxelMap& map, std::size_t page,
+                            std::vector<OccupancyBlock>& blocks);
+
 /// Writes atomically; throws Error on failure, keeping any previous file.
 void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path);
+/// The same from collected blocks (any order), of a map of `voxel_size_m`.
+void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
+                      const std::filesystem::path& path);
 
 }  // namespace sonarcarve

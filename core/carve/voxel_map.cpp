@@ -56,17 +56,18 @@ VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds, bool 
     first_block_[a] = floorDiv(lo[a], kBlockSide);
     dims_[a] = floorDiv(hi[a], kBlockSide) - first_block_[a] + 1;
   }
-  const double blocks = static_cast<double>(dims_.x()) * dims_.y() * dims_.z();
+  for (int a = 0; a < 3; ++a) {
+    page_dims_[a] = (dims_[a] + kPageSide - 1) / kPageSide;
+  }
+  const double blocks =
+      static_cast<double>(page_dims_.x()) * page_dims_.y() * page_dims_.z() * kPageBlocks;
   if (blocks > 2.0e9) {
     throw Error("voxel map", "",
                 "region too large for the voxel size (" + std::to_string(blocks) +
                     " blocks); set a smaller region");
   }
+  pages_.resize(static_cast<std::size_t>(page_dims_.x()) * page_dims_.y() * page_dims_.z());
   const auto n = static_cast<std::size_t>(blocks);
-  state_.assign(n, BlockState::Unknown);
-  slot_.assign(n, -1);
-  stamp_.assign(n, 0);
-  visited_.assign(n, 0);
   chunks_.reserve(n / kChunkBlocks + 1);
   count_chunks_.reserve(n / kChunkBlocks + 1);
   mask_chunks_.reserve(n / kChunkBlocks + 1);
@@ -77,11 +78,61 @@ Eigen::AlignedBox3d VoxelMap::bounds() const {
   return {lo, lo + dims_.cast<double>() * blockSize()};
 }
 
+Eigen::Vector3i VoxelMap::pageCoords(std::size_t page) const {
+  const auto nx = static_cast<std::size_t>(page_dims_.x());
+  const auto ny = static_cast<std::size_t>(page_dims_.y());
+  return Eigen::Vector3i(static_cast<int>(page % nx), static_cast<int>((page / nx) % ny),
+                         static_cast<int>(page / (nx * ny)));
+}
+
 Eigen::Vector3i VoxelMap::blockCoords(std::size_t index) const {
+  const auto in = static_cast<int>(index % kPageBlocks);
+  return pageCoords(index / kPageBlocks) * kPageSide +
+         Eigen::Vector3i(in % kPageSide, (in / kPageSide) % kPageSide,
+                         in / (kPageSide * kPageSide));
+}
+
+std::size_t VoxelMap::blockAtRowOrder(std::size_t n) const {
   const auto nx = static_cast<std::size_t>(dims_.x());
   const auto ny = static_cast<std::size_t>(dims_.y());
-  return Eigen::Vector3i(static_cast<int>(index % nx), static_cast<int>((index / nx) % ny),
-                         static_cast<int>(index / (nx * ny)));
+  return blockIndex(Eigen::Vector3i(static_cast<int>(n % nx), static_cast<int>((n / nx) % ny),
+                                    static_cast<int>(n / (nx * ny))));
+}
+
+std::size_t VoxelMap::rowOrderOf(std::size_t block) const {
+  const Eigen::Vector3i rel = blockCoords(block);
+  return (static_cast<std::size_t>(rel.z()) * dims_.y() + rel.y()) * dims_.x() + rel.x();
+}
+
+VoxelMap::Page& VoxelMap::heldPage(std::size_t block) {
+  std::unique_ptr<Page>& page = pages_[pageOf(block)];
+  if (page == nullptr) {
+    page = std::make_unique<Page>();
+    page->slot.fill(-1);
+    ++pages_held_;
+  }
+  return *page;
+}
+
+void VoxelMap::holdPages(const Eigen::Vector3i& lo, const Eigen::Vector3i& hi) {
+  for (int z = lo.z() >> 3; z <= hi.z() >> 3; ++z) {
+    for (int y = lo.y() >> 3; y <= hi.y() >> 3; ++y) {
+      for (int x = lo.x() >> 3; x <= hi.x() >> 3; ++x) {
+        heldPage(pageIndex({x, y, z}) * kPageBlocks);
+      }
+    }
+  }
+}
+
+void VoxelMap::releasePage(std::size_t page) {
+  if (pages_[page] == nullptr) {
+    return;
+  }
+  for (std::size_t b = page * kPageBlocks; b < (page + 1) * kPageBlocks; ++b) {
+    releaseSlot(b);
+  }
+  pages_[page].reset();
+  --pages_held_;
 }
 
 bool VoxelMap::blockSpan(const Eigen::AlignedBox3d& box, Eigen::Vector3i& lo,
@@ -99,15 +150,15 @@ bool VoxelMap::blockSpan(const Eigen::AlignedBox3d& box, Eigen::Vector3i& lo,
 }
 
 const float* VoxelMap::values(std::size_t block) const {
-  return state_[block] == BlockState::Mixed ? slotValues(slot_[block]) : nullptr;
+  return state(block) == BlockState::Mixed ? slotValues(slotOf(block)) : nullptr;
 }
 
 float* VoxelMap::values(std::size_t block) {
-  return state_[block] == BlockState::Mixed ? slotValues(slot_[block]) : nullptr;
+  return state(block) == BlockState::Mixed ? slotValues(slotOf(block)) : nullptr;
 }
 
 void VoxelMap::copyValues(std::size_t block, float* out) const {
-  switch (state_[block]) {
+  switch (state(block)) {
     case BlockState::Unknown:
       std::fill_n(out, kBlockVoxels, kUnknown);
       return;
@@ -126,20 +177,20 @@ void VoxelMap::copyValues(std::size_t block, float* out) const {
         }
         return table;
       }();
-      const auto* bytes = reinterpret_cast<const unsigned char*>(slotMask(slot_[block]));
+      const auto* bytes = reinterpret_cast<const unsigned char*>(slotMask(slotOf(block)));
       for (int b = 0; b < kBlockVoxels / 8; ++b) {
         std::copy_n(patterns[bytes[b]].data(), 8, out + 8 * b);
       }
       return;
     }
     case BlockState::Mixed:
-      std::copy_n(slotValues(slot_[block]), kBlockVoxels, out);
+      std::copy_n(slotValues(slotOf(block)), kBlockVoxels, out);
       return;
   }
 }
 
 const std::uint8_t* VoxelMap::views(std::size_t block) const {
-  return with_counts_ && state_[block] == BlockState::Mixed ? slotCounts(slot_[block]) : nullptr;
+  return with_counts_ && state(block) == BlockState::Mixed ? slotCounts(slotOf(block)) : nullptr;
 }
 
 const std::uint8_t* VoxelMap::carveVotes(std::size_t block) const {
@@ -148,7 +199,7 @@ const std::uint8_t* VoxelMap::carveVotes(std::size_t block) const {
 }
 
 std::uint8_t* VoxelMap::counts(std::size_t block) {
-  return with_counts_ && state_[block] == BlockState::Mixed ? slotCounts(slot_[block]) : nullptr;
+  return with_counts_ && state(block) == BlockState::Mixed ? slotCounts(slotOf(block)) : nullptr;
 }
 
 Eigen::Vector3i VoxelMap::voxelOf(const Eigen::Vector3d& p_world) const {
@@ -167,14 +218,14 @@ float VoxelMap::value(const Eigen::Vector3i& voxel) const {
     }
   }
   const std::size_t block = blockIndex(rel);
-  switch (state_[block]) {
+  switch (state(block)) {
     case BlockState::Unknown:
       return kUnknown;
     case BlockState::Free:
       return 0.0f;
     case BlockState::Partial: {
       const int i = (in.z() * kBlockSide + in.y()) * kBlockSide + in.x();
-      return (slotMask(slot_[block])[i / 64] >> (i % 64)) & 1u ? 0.0f : kUnknown;
+      return (slotMask(slotOf(block))[i / 64] >> (i % 64)) & 1u ? 0.0f : kUnknown;
     }
     case BlockState::Mixed:
       break;
@@ -183,14 +234,14 @@ float VoxelMap::value(const Eigen::Vector3i& voxel) const {
 }
 
 void VoxelMap::storeMask(std::size_t block, const std::array<std::uint64_t, kMaskWords>& mask) {
-  if (state_[block] != BlockState::Partial) {
+  if (state(block) != BlockState::Partial) {
     releaseSlot(block);
-    slot_[block] = takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
+    slotOf(block) = takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
       mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
     });
-    state_[block] = BlockState::Partial;
+    stateOf(block) = BlockState::Partial;
   }
-  std::copy(mask.begin(), mask.end(), slotMask(slot_[block]));
+  std::copy(mask.begin(), mask.end(), slotMask(slotOf(block)));
 }
 
 void VoxelMap::compactColdBlocks(std::uint32_t now, std::uint32_t cold_after) {
@@ -204,26 +255,35 @@ void VoxelMap::compactColdBlocks(std::uint32_t now, std::uint32_t cold_after) {
       continue;
     }
     const auto b = static_cast<std::size_t>(block);
-    const auto age = static_cast<std::uint16_t>(static_cast<std::uint16_t>(now) - visited_[b]);
-    if (age > cold_after && carvedMask(slotValues(slot_[b]), mask)) {
+    const std::uint16_t visited = pages_[pageOf(b)]->visited[b % kPageBlocks];
+    const auto age = static_cast<std::uint16_t>(static_cast<std::uint16_t>(now) - visited);
+    if (age > cold_after && carvedMask(slotValues(slotOf(b)), mask)) {
       storeMask(b, mask);
     }
   }
 }
 
 void VoxelMap::releaseSlot(std::size_t block) {
-  if (state_[block] == BlockState::Mixed) {
-    slot_block_[static_cast<std::size_t>(slot_[block])] = -1;
-    free_slots_.push_back(slot_[block]);
-  } else if (state_[block] == BlockState::Partial) {
-    free_mask_slots_.push_back(slot_[block]);
+  if (pages_[pageOf(block)] == nullptr) {
+    return;
   }
-  slot_[block] = -1;
+  std::int32_t& slot = slotOf(block);
+  if (state(block) == BlockState::Mixed) {
+    slot_block_[static_cast<std::size_t>(slot)] = -1;
+    free_slots_.push_back(slot);
+  } else if (state(block) == BlockState::Partial) {
+    free_mask_slots_.push_back(slot);
+  }
+  slot = -1;
 }
 
 void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint32_t stamp,
                           const std::uint8_t* new_counts, bool compact) {
-  stamp_[block] = stamp;
+  if (pages_[pageOf(block)] == nullptr) {
+    std::lock_guard lock(storage_mutex_);
+    heldPage(block);
+  }
+  pages_[pageOf(block)]->stamp[block % kPageBlocks] = stamp;
   // Without counts, a block of carved and unknown voxels keeps a mask of its carved ones.
   std::array<std::uint64_t, kMaskWords> mask{};
   const bool partial =
@@ -234,11 +294,11 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
            ? std::all_of(mask.begin(), mask.end(), [](std::uint64_t w) { return ~w == 0; })
            : std::all_of(new_values, new_values + kBlockVoxels, [](float v) { return v == 0.0f; }));
   if (all_carved) {
-    if (state_[block] == BlockState::Mixed || state_[block] == BlockState::Partial) {
+    if (state(block) == BlockState::Mixed || state(block) == BlockState::Partial) {
       std::lock_guard lock(storage_mutex_);
       releaseSlot(block);
     }
-    state_[block] = BlockState::Free;
+    stateOf(block) = BlockState::Free;
     return;
   }
   if (partial) {
@@ -246,10 +306,10 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
     storeMask(block, mask);
     return;
   }
-  if (state_[block] != BlockState::Mixed) {
+  if (state(block) != BlockState::Mixed) {
     std::lock_guard lock(storage_mutex_);
     releaseSlot(block);
-    slot_[block] = takeSlot(free_slots_, slots_used_, kChunkBlocks, [&] {
+    slotOf(block) = takeSlot(free_slots_, slots_used_, kChunkBlocks, [&] {
       chunks_.push_back(std::make_unique<float[]>(kChunkBlocks * kBlockVoxels));
       if (with_counts_) {
         count_chunks_.push_back(std::make_unique<std::uint8_t[]>(kChunkBlocks * kCountBytes));
@@ -258,27 +318,31 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
     if (slot_block_.size() < slots_used_) {
       slot_block_.resize(slots_used_, -1);
     }
-    slot_block_[static_cast<std::size_t>(slot_[block])] = static_cast<std::int32_t>(block);
-    state_[block] = BlockState::Mixed;
+    slot_block_[static_cast<std::size_t>(slotOf(block))] = static_cast<std::int32_t>(block);
+    stateOf(block) = BlockState::Mixed;
     if (with_counts_ && new_counts == nullptr) {
-      std::fill_n(slotCounts(slot_[block]), kCountBytes, std::uint8_t{0});
+      std::fill_n(slotCounts(slotOf(block)), kCountBytes, std::uint8_t{0});
     }
   }
-  float* target = slotValues(slot_[block]);
+  float* target = slotValues(slotOf(block));
   if (target != new_values) {
     std::copy(new_values, new_values + kBlockVoxels, target);
   }
   if (!with_counts_ || new_counts == nullptr) {
     return;
   }
-  std::uint8_t* target_counts = slotCounts(slot_[block]);
+  std::uint8_t* target_counts = slotCounts(slotOf(block));
   if (target_counts != new_counts) {
     std::copy(new_counts, new_counts + kCountBytes, target_counts);
   }
 }
 
 void VoxelMap::forEachOccupied(const std::function<void(const Eigen::Vector3i&, float)>& f) const {
-  for (std::size_t b = 0; b < state_.size(); ++b) {
+  for (std::size_t b = 0; b < blockCount(); ++b) {
+    if (pages_[pageOf(b)] == nullptr) {
+      b += kPageBlocks - 1;
+      continue;
+    }
     const float* v = values(b);
     if (v == nullptr) {
       continue;
@@ -293,9 +357,19 @@ void VoxelMap::forEachOccupied(const std::function<void(const Eigen::Vector3i&, 
 
 void VoxelMap::forEachOccupiedOnShell(
     const std::function<void(const Eigen::Vector3i&, float)>& f) const {
+  for (std::size_t page = 0; page < pages_.size(); ++page) {
+    forEachOccupiedOnShellIn(page, f);
+  }
+}
+
+void VoxelMap::forEachOccupiedOnShellIn(
+    std::size_t page, const std::function<void(const Eigen::Vector3i&, float)>& f) const {
+  if (pages_[page] == nullptr) {
+    return;
+  }
   const auto occupied = [](float v) { return v > 0.0f && v < kUnknown; };
   constexpr int kS = kBlockSide;
-  for (std::size_t b = 0; b < state_.size(); ++b) {
+  for (std::size_t b = page * kPageBlocks; b < (page + 1) * kPageBlocks; ++b) {
     const float* v = values(b);
     if (v == nullptr) {
       continue;
@@ -333,12 +407,19 @@ std::size_t VoxelMap::occupiedCount() const {
 }
 
 std::size_t VoxelMap::blockCount(BlockState s) const {
-  return static_cast<std::size_t>(std::count(state_.begin(), state_.end(), s));
+  std::size_t n = 0;
+  for (const std::unique_ptr<Page>& page : pages_) {
+    if (page != nullptr) {
+      n += static_cast<std::size_t>(std::count(page->state.begin(), page->state.end(), s));
+    } else if (s == BlockState::Unknown) {
+      n += kPageBlocks;
+    }
+  }
+  return n;
 }
 
 std::size_t VoxelMap::memoryBytes() const {
-  return state_.capacity() * sizeof(BlockState) + slot_.capacity() * sizeof(std::int32_t) +
-         stamp_.capacity() * sizeof(std::uint32_t) +
+  return pages_.capacity() * sizeof(std::unique_ptr<Page>) + pages_held_ * sizeof(Page) +
          chunks_.size() * kChunkBlocks * kBlockVoxels * sizeof(float) +
          count_chunks_.size() * kChunkBlocks * kCountBytes +
          mask_chunks_.size() * kChunkBlocks * kMaskWords * sizeof(std::uint64_t);

@@ -18,6 +18,11 @@
 // the sonar's axis pass over it, the views that resolve its elevation; pose refinement aligns
 // frames to such settled voxels) and the views that voted to carve it (to 255: robust
 // carving carves a voxel once `CarveParams::carve_votes` views agree).
+// The block table is paged: a page holds the table entries of a cube of 8^3 blocks (1.28 m at
+// 2 cm voxels) and exists only once something is stored there (or a carver reaches it), so an
+// empty region of the box costs a null pointer; releasePage lets a finished region go
+// (eviction, docs/scaling.md). A block's index is its page's, times 512, plus its place in the
+// page: indices run page by page, not along the box's rows.
 // Limits: the box must hold at most 2^31 blocks; indices fit OctoMap's +-32768 voxels.
 // Not thread safe for writing; FastCarver coordinates its threads.
 #pragma once
@@ -52,16 +57,51 @@ class VoxelMap {
   /// Global index of the first block of the box (block = floor(voxel / 8)).
   const Eigen::Vector3i& firstBlock() const { return first_block_; }
   Eigen::AlignedBox3d bounds() const;
-  std::size_t blockCount() const { return state_.size(); }
+  /// Size of the blocks' index space (pages x 512): indices past the box's edges in its last
+  /// pages stay Unknown.
+  std::size_t blockCount() const { return pages_.size() * kPageBlocks; }
 
-  /// Linear index of a block given in box-relative block coordinates.
+  static constexpr int kPageSide = 8;  ///< blocks a side of a page of the block table
+  static constexpr int kPageBlocks = kPageSide * kPageSide * kPageSide;
+  /// Index of a block given in box-relative block coordinates.
   std::size_t blockIndex(const Eigen::Vector3i& rel) const {
-    return (static_cast<std::size_t>(rel.z()) * dims_.y() + rel.y()) * dims_.x() + rel.x();
+    const Eigen::Vector3i page(rel.x() >> 3, rel.y() >> 3, rel.z() >> 3);
+    const auto in = static_cast<std::size_t>(
+        ((rel.z() & 7) * kPageSide + (rel.y() & 7)) * kPageSide + (rel.x() & 7));
+    return pageIndex(page) * kPageBlocks + in;
   }
   Eigen::Vector3i blockCoords(std::size_t index) const;
+  /// The box's blocks in the order of rows (x fastest, then y, then z), as map files store
+  /// them: the n-th block of that order, and a block's place in it.
+  std::size_t blockAtRowOrder(std::size_t n) const;
+  std::size_t rowOrderOf(std::size_t block) const;
+  std::size_t boxBlockCount() const {
+    return static_cast<std::size_t>(dims_.x()) * dims_.y() * dims_.z();
+  }
+
+  /// Pages of the block table: their grid over the box, index and coordinates.
+  const Eigen::Vector3i& pageDims() const { return page_dims_; }
+  std::size_t pageCount() const { return pages_.size(); }
+  std::size_t pageIndex(const Eigen::Vector3i& page) const {
+    return (static_cast<std::size_t>(page.z()) * page_dims_.y() + page.y()) * page_dims_.x() +
+           page.x();
+  }
+  Eigen::Vector3i pageCoords(std::size_t page) const;
+  static std::size_t pageOf(std::size_t block) { return block / kPageBlocks; }
+  bool pageHeld(std::size_t page) const { return pages_[page] != nullptr; }
+  std::size_t pagesHeld() const { return pages_held_; }
+  /// Makes room in the table for the box-relative blocks [lo, hi] (inclusive): a carver calls
+  /// it before its threads reach them. Not thread safe.
+  void holdPages(const Eigen::Vector3i& lo, const Eigen::Vector3i& hi);
+  /// Lets a page's blocks go: their contents and the page's table entries; they read Unknown
+  /// afterwards. Not thread safe.
+  void releasePage(std::size_t page);
   /// The box-relative blocks [lo, hi] (inclusive) that `box` (world) touches; false if none.
   bool blockSpan(const Eigen::AlignedBox3d& box, Eigen::Vector3i& lo, Eigen::Vector3i& hi) const;
-  BlockState state(std::size_t block) const { return state_[block]; }
+  BlockState state(std::size_t block) const {
+    const Page* p = pages_[pageOf(block)].get();
+    return p == nullptr ? BlockState::Unknown : p->state[block % kPageBlocks];
+  }
   /// The 512 values of a Mixed block (x fastest, then y, then z); nullptr otherwise.
   const float* values(std::size_t block) const;
   float* values(std::size_t block);
@@ -78,10 +118,14 @@ class VoxelMap {
   static constexpr std::uint8_t kSeenAbove = 0x40;
   static constexpr std::uint8_t kSeenBelow = 0x80;
   /// Frame stamp of the last change of a block (0: never changed).
-  std::uint32_t stamp(std::size_t block) const { return stamp_[block]; }
-  /// Notes that a view at `stamp` reached the block. Thread safe for different blocks.
+  std::uint32_t stamp(std::size_t block) const {
+    const Page* p = pages_[pageOf(block)].get();
+    return p == nullptr ? 0 : p->stamp[block % kPageBlocks];
+  }
+  /// Notes that a view at `stamp` reached the block, whose page is held (holdPages). Thread
+  /// safe for different blocks.
   void markVisited(std::size_t block, std::uint32_t stamp) {
-    visited_[block] = static_cast<std::uint16_t>(stamp);
+    pages_[pageOf(block)]->visited[block % kPageBlocks] = static_cast<std::uint16_t>(stamp);
   }
   /// Keeps as masks the Mixed blocks of carved and unknown voxels only that no view has
   /// reached in the `cold_after` stamps before `now`. Not thread safe.
@@ -118,6 +162,9 @@ class VoxelMap {
   /// not occupied: the shell that can be a first return. Voxels buried inside occupied
   /// space (under a seabed that no view could carve) are always behind a neighbour.
   void forEachOccupiedOnShell(const std::function<void(const Eigen::Vector3i&, float)>& f) const;
+  /// The same within one page (reading its neighbours' voxels at its faces), block by block.
+  void forEachOccupiedOnShellIn(std::size_t page,
+                                const std::function<void(const Eigen::Vector3i&, float)>& f) const;
   std::size_t occupiedCount() const;
   std::size_t blockCount(BlockState state) const;
   /// Bytes held by the map (block table and block contents).
@@ -128,10 +175,24 @@ class VoxelMap {
   bool with_counts_;
   Eigen::Vector3i first_block_;
   Eigen::Vector3i dims_;
-  std::vector<BlockState> state_;
-  std::vector<std::int32_t> slot_;  // Mixed blocks: index into storage_ / kBlockVoxels
-  std::vector<std::uint32_t> stamp_;
-  std::vector<std::uint16_t> visited_;    // stamp of the last view that reached a block, mod 2^16
+  Eigen::Vector3i page_dims_;
+  // The table entries of a page's blocks.
+  struct Page {
+    std::array<BlockState, kPageBlocks> state{};
+    std::array<std::int32_t, kPageBlocks> slot{};  // Mixed: value slot; Partial: mask slot
+    std::array<std::uint32_t, kPageBlocks> stamp{};
+    std::array<std::uint16_t, kPageBlocks> visited{};  // stamp of the last view, mod 2^16
+  };
+  std::vector<std::unique_ptr<Page>> pages_;
+  std::size_t pages_held_ = 0;
+  /// The page of a block, made when missing (under storage_mutex_ when threads store).
+  Page& heldPage(std::size_t block);
+  std::int32_t& slotOf(std::size_t block) const {
+    return pages_[pageOf(block)]->slot[block % kPageBlocks];
+  }
+  BlockState& stateOf(std::size_t block) const {
+    return pages_[pageOf(block)]->state[block % kPageBlocks];
+  }
   std::vector<std::int32_t> slot_block_;  // the block a value slot holds, or -1
   // Block contents live in chunks of kChunkBlocks blocks whose addresses never change, so
   // threads may carve Mixed blocks in place while others allocate new ones.

@@ -5,10 +5,16 @@
 // elevation bins its footprint covers and the nearest one wins each cell; a voxel that wins a
 // cell in a frame gains one supporting view. Voxels with at least `min_views` views form the
 // surface. Frames are resolved in parallel; add frames, then call result().
+// For a run that lets finished regions go (pipeline/evicting_surface.h) the voxels can also
+// come in batches (addVoxels), be counted against the frames that see them
+// (countObservations over the groups of a batch) and leave with their points (takeBlocks).
+// Ties between equally far voxels go to the first in voxelOrderLess, so the result does not
+// depend on the order in which voxels came.
 #pragma once
 
 #include <Eigen/Geometry>
 #include <atomic>
+#include <functional>
 #include <vector>
 
 #include "carve/carve_params.h"
@@ -19,15 +25,29 @@
 
 namespace sonarcarve {
 
+/// The order of voxels (global indices) the resolver keeps: by block of 8^3 (z, y, x), then
+/// within the block (z, y, x).
+bool voxelOrderLess(const Eigen::Vector3i& a, const Eigen::Vector3i& b);
+
 class OcclusionResolver {
  public:
   /// Takes the occupied voxels of a carved map (global voxel indices and values).
   OcclusionResolver(const std::vector<Eigen::Vector3i>& voxels, const std::vector<float>& values,
                     const SonarModel& sonar, const CarveParams& params);
 
-  /// Counts the voxels inside the frustum of one pose. Thread safe. Call it for every view
-  /// before addView when using requireObservations().
-  void countObservations(const Eigen::Isometry3d& T_world_sonar);
+  /// Adds voxels of blocks not held yet; returns the first of the groups (blocks) they make,
+  /// which run to groups(). Not thread safe.
+  std::size_t addVoxels(const std::vector<Eigen::Vector3i>& voxels,
+                        const std::vector<float>& values);
+  std::size_t groups() const { return block_keys_.size(); }
+  /// Takes out the groups whose block (global block index) `leaves` names, with the surface
+  /// points (at least `min_views` views) among their voxels. Not thread safe.
+  SurfacePoints takeBlocks(const std::function<bool(const Eigen::Vector3i&)>& leaves,
+                           std::uint32_t min_views);
+
+  /// Counts the voxels inside the frustum of one pose (of groups [first_group, groups())).
+  /// Thread safe. Call it for every view before addView when using requireObservations().
+  void countObservations(const Eigen::Isometry3d& T_world_sonar, std::size_t first_group = 0);
   /// From now on only voxels inside at least `views` frustums take part in the z-buffers.
   /// Noise that survives carving lies where few views overlap (near the sonar); without
   /// this it would hide the structure behind it. Not thread safe.
@@ -41,6 +61,8 @@ class OcclusionResolver {
   /// Occupied voxels that were first returns in at least `min_views` views.
   SurfacePoints result(std::uint32_t min_views = 1) const;
   std::size_t occupiedVoxels() const { return centres_.size(); }
+  /// Bytes of the voxels and counters held.
+  std::size_t memoryBytes() const;
 
  private:
   struct Cell {
@@ -48,6 +70,7 @@ class OcclusionResolver {
     std::int32_t voxel = -1;
   };
   std::vector<Cell> zBuffer(const Eigen::Isometry3d& T_world_sonar) const;
+  void addGroups(const std::vector<Eigen::Vector3i>& voxels, const std::vector<float>& values);
   CarvingGeometry geometry_;
   double voxel_size_m_;
   int elevation_bins_;
@@ -55,15 +78,20 @@ class OcclusionResolver {
   // Occupied voxels, grouped by block for culling.
   std::vector<Eigen::Vector3f> centres_;
   std::vector<float> intensities_;
+  std::vector<Eigen::Vector3i> voxels_;  // global indices, for ties and for takeBlocks
   std::vector<Eigen::Vector3f> block_centres_;
-  std::vector<std::uint32_t> block_begin_;  // voxels of group g: [begin[g], begin[g + 1])
+  std::vector<Eigen::Vector3i> block_keys_;    // global block index of each group
+  std::vector<std::uint32_t> block_begin_{0};  // voxels of group g: [begin[g], begin[g + 1])
   double block_radius_;
-  std::unique_ptr<std::atomic<std::uint32_t>[]> views_;
-  std::unique_ptr<std::atomic<std::uint32_t>[]> observed_;
+  // Counters updated through std::atomic_ref by the threads resolving frames.
+  std::vector<std::uint32_t> views_;
+  std::vector<std::uint32_t> observed_;
   std::uint32_t required_observations_ = 0;
-  // Calls f(voxel index, range, bearing, elevation, angular radius) for each voxel in view.
+  // Calls f(voxel index, range, bearing, elevation, angular radius) for each voxel in view
+  // among groups [first_group, groups()).
   template <typename F>
-  void forEachVoxelInView(const Eigen::Isometry3d& T_world_sonar, F&& f) const;
+  void forEachVoxelInView(const Eigen::Isometry3d& T_world_sonar, std::size_t first_group,
+                          F&& f) const;
 };
 
 }  // namespace sonarcarve

@@ -2,8 +2,9 @@
 // available when the run starts. The pipeline checks it where memory grows: before the map is
 // allocated (size_limits.h), after each carved frame, and before occlusion resolution and the
 // mesh, so that a mission too large for the machine stops between frames with an Error that
-// gives the figures, instead of swapping or being killed. Nothing is evicted yet: past the
-// budget the run stops (docs/reliability.md, "Limits").
+// gives the figures, instead of swapping or being killed. A run that lets finished blocks go
+// (evict_blocks) releases them after each frame before the check, so the check sees what is
+// left; past the budget then the run stops (docs/reliability.md, "Limits").
 #pragma once
 
 #include <cstdint>

@@ -290,8 +290,8 @@ std::vector<ParamSpec> makeSchema() {
        .unit = "MB",
        .range = kNonNegative,
        .help = "memory the run may hold, in MB of 2^20 bytes: past it the run stops between "
-               "frames with an error naming the figures (nothing is evicted yet); 0 = 80 % of "
-               "the memory available when the run starts",
+               "frames with an error naming the figures (after letting finished blocks go, "
+               "evict_blocks); 0 = 80 % of the memory available when the run starts",
        .flag = "--memory-budget",
        .gui = {.group = "Carving",
                .label = "Memory budget",
@@ -301,6 +301,15 @@ std::vector<ParamSpec> makeSchema() {
                .suffix = " MB",
                .min_text = "80 % of the available"},
        .access = field([](auto& p) -> auto& { return p.memory_budget_mb; })},
+      {.key = "evict_blocks",
+       .help = "fast engine: let finished regions of the map go once their surface is resolved "
+               "(the same outputs, memory bounded by the area in view); runs that need the "
+               "whole map keep it (map viewer, --save-map, --load-map, occlusion-aware "
+               "carving, pose refinement)",
+       .flag = "--evict-blocks",
+       .gui = {.group = "Carving", .label = "Let finished blocks go", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.evict_blocks; }),
+       .applies = usesFastEngine},
 
       // Navigation.
       {.key = "pose_refinement.enabled",

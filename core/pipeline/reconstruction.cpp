@@ -1,7 +1,5 @@
 #include "pipeline/reconstruction.h"
 
-#include "carve/carving_geometry.h"
-
 #include <algorithm>
 #include <chrono>
 #include <optional>
@@ -11,6 +9,7 @@
 #include "common/error.h"
 #include "denoise/noise_model.h"
 #include "pipeline/carve_stage.h"
+#include "pipeline/evicting_surface.h"
 #include "pipeline/frame_stage.h"
 #include "pipeline/memory_budget.h"
 #include "pipeline/size_limits.h"
@@ -50,6 +49,11 @@ Pipeline::Pipeline(const Mission& mission, ReconstructionParams params, ThreadPo
                        : std::make_shared<const NoiseModel>(NoiseModel::load(params_.noise_model))),
       pool_(pool) {}
 
+bool Pipeline::evicts() const {
+  return params_.evict_blocks && params_.engine == Engine::Fast && !earlier_map_ && carve_frames_ &&
+         !keep_whole_map_ && !params_.occlusion_aware_carving && !params_.pose_refinement.enabled;
+}
+
 ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* observer,
                                    std::size_t update_every) const {
   const auto t_start = std::chrono::steady_clock::now();
@@ -72,8 +76,15 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
   const MemoryWatch memory(memoryBudget(params_.memory_budget_mb, availableMemory()));
-  const MemoryEstimate buffers =
-      requireBoundedSizes(bounds, sonar_, params_.carve, pool_.size(), memory.budget());
+  // A run that lets finished blocks go holds the region in view, not the box: the least it
+  // holds is one frame's, and its box is bounded only by the map's index (VoxelMap).
+  const bool evicting_run = evicts() && observer == nullptr;
+  const Eigen::AlignedBox3d held = evicting_run ? CarvingGeometry(sonar_, stage.carve)
+                                                      .frustumBounds(posed.front().T_world_sonar)
+                                                      .intersection(bounds)
+                                                : bounds;
+  const MemoryEstimate buffers = requireBoundedSizes(held.isEmpty() ? bounds : held, sonar_,
+                                                     params_.carve, pool_.size(), memory.budget());
   const std::string threads = " of " + std::to_string(pool_.size()) + " threads";
   NoiseChoice noise;
   try {
@@ -116,8 +127,36 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     }
     memory.require(parts, when);
   };
-  CarveStageResult carved = carving.run(posed, bounds, frames, progress,
-                                        updates ? &*updates : nullptr, skip, check_frame);
+  // The mesh of the surface, last.
+  const auto finish = [&] {
+    if (params_.mesh_enabled && !result.cancelled) {
+      const double map_held =
+          result.carver ? static_cast<double>(result.carver->memoryBytes()) : 0.0;
+      memory.require(
+          {{"map", map_held},
+           {"surface points", static_cast<double>(result.surface.size() * sizeof(SurfacePoint))},
+           {"mesh", meshStageBytes(result.surface.size())}},
+          "before the mesh");
+      result.mesh = meshStage(result.surface, params_.mesh, params_.carve.voxel_size_m, progress);
+    }
+    result.total_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  };
+  // A map viewer shows the whole map: it is kept then.
+  std::optional<EvictingSurface> evicting;
+  FrameCarved frame_carved;
+  if (evicting_run) {
+    CarveParams as_carved = stage.carve;
+    as_carved.region = bounds;
+    evicting.emplace(posed, sonar_, as_carved, params_.min_views, pool_);
+    frame_carved = [&](std::size_t position, const Eigen::Isometry3d& T_world_sonar,
+                       Carver& carver) {
+      evicting->frameCarved(position, T_world_sonar, *carver.evictableMap());
+    };
+  }
+  CarveStageResult carved =
+      carving.run(posed, bounds, frames, progress, updates ? &*updates : nullptr, skip, check_frame,
+                  frame_carved);
   result.cancelled = carved.cancelled;
   result.frames_used = carved.used.size();
   result.refinement = std::move(carved.refinement);
@@ -128,13 +167,29 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     throw Error(mission_.folder.string(), "", "every selected frame failed to load");
   }
   result.carver = std::move(carved.carver);
+  std::sort(carved.carve_ms.begin(), carved.carve_ms.end());
+  result.carve_ms_median =
+      carved.carve_ms.empty() ? 0.0 : carved.carve_ms[carved.carve_ms.size() / 2];
+  if (evicting) {
+    if (!result.cancelled) {
+      evicting->finish(*result.carver->evictableMap());
+    }
+    result.evicted = true;
+    result.pages_freed_early = evicting->pagesFreedEarly();
+    result.surface = evicting->surface();
+    result.occupancy = evicting->takeOccupancy();
+    result.occupied_voxels = evicting->occupiedVoxels();
+    result.map_bytes = evicting->peakBytes();
+    result.occlusion_ms_per_frame =
+        evicting->occlusionMs() / static_cast<double>(std::max<std::size_t>(1, posed.size()));
+    progress.report("occlusion", posed.size(), posed.size());
+    finish();
+    return result;
+  }
   result.map = result.carver->blockMap();
   const CarverStats stats = result.carver->stats();
   result.occupied_voxels = stats.occupied_voxels;
   result.map_bytes = stats.memory_bytes;
-  std::sort(carved.carve_ms.begin(), carved.carve_ms.end());
-  result.carve_ms_median =
-      carved.carve_ms.empty() ? 0.0 : carved.carve_ms[carved.carve_ms.size() / 2];
 
   // Occlusion resolution and the surface.
   const auto map_bytes = static_cast<double>(result.map_bytes);
@@ -147,16 +202,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   result.cancelled = result.cancelled || surface.cancelled;
   result.occlusion_ms_per_frame = surface.ms_per_frame;
   result.surface = std::move(surface.surface);
-  if (params_.mesh_enabled && !result.cancelled) {
-    memory.require(
-        {{"map", map_bytes},
-         {"surface points", static_cast<double>(result.surface.size() * sizeof(SurfacePoint))},
-         {"mesh", meshStageBytes(result.surface.size())}},
-        "before the mesh");
-    result.mesh = meshStage(result.surface, params_.mesh, carved.carve.voxel_size_m, progress);
-  }
-  result.total_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  finish();
   return result;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "carve/carver.h"
+#include "carve/occupancy_export.h"
 #include "carve/voxel_map.h"
 #include "common/progress.h"
 #include "io/mission.h"
@@ -27,7 +28,12 @@ struct ReconstructionResult {
   SurfacePoints surface;
   Mesh mesh;                       ///< empty when meshing is off or there are too few points
   std::unique_ptr<Carver> carver;  ///< the carved map, whatever the engine
-  const VoxelMap* map = nullptr;   ///< the carver's block map (fast engine), or null
+  /// The carver's block map (fast engine), or null; null too when the run let its finished
+  /// blocks go (evicted): then `occupancy` holds what map.bt needs.
+  const VoxelMap* map = nullptr;
+  bool evicted = false;
+  std::size_t pages_freed_early = 0;      ///< an evicting run's pages let go before its last frame
+  std::vector<OccupancyBlock> occupancy;  ///< an evicting run's .bt export blocks
   std::size_t frames_used = 0;
   std::string detector;   ///< the detector that ran (`auto` made concrete)
   std::string denoising;  ///< which noise model it used and why, in words
@@ -37,8 +43,8 @@ struct ReconstructionResult {
   std::vector<FrameProblem> skipped;
   bool cancelled = false;
   std::size_t occupied_voxels = 0;  ///< all occupied voxels of the carved map
-  std::size_t map_bytes = 0;
-  double carve_ms_median = 0.0;  ///< per frame
+  std::size_t map_bytes = 0;        ///< at the end; for an evicting run, the most it held
+  double carve_ms_median = 0.0;     ///< per frame
   double occlusion_ms_per_frame = 0.0;
   double total_s = 0.0;
 };
@@ -66,6 +72,11 @@ class Pipeline {
     earlier_map_ = std::move(earlier_map);
     carve_frames_ = carve_frames;
   }
+  /// Keeps the whole carved map to the end (reconstruct --save-map writes it): no eviction.
+  void keepWholeMap() { keep_whole_map_ = true; }
+  /// Whether a run without a map viewer lets finished blocks go (evict_blocks, and nothing
+  /// that needs the whole map).
+  bool evicts() const;
 
  private:
   const Mission& mission_;
@@ -74,6 +85,7 @@ class Pipeline {
   std::shared_ptr<const NoiseModel> noise_model_;  ///< the params' file, read once; or null
   std::shared_ptr<const VoxelMap> earlier_map_;    ///< startFrom's map, or null
   bool carve_frames_ = true;
+  bool keep_whole_map_ = false;
   ThreadPool& pool_;
 };
 

@@ -58,6 +58,11 @@ struct ReconstructionParams {
   /// What the run may hold in memory, MiB (2^20 bytes); 0 = a share of the memory available
   /// when the run starts (pipeline/memory_budget.h). Past it the run stops with an Error.
   std::uint64_t memory_budget_mb = 0;
+  /// Fast engine: let the map's finished regions go as the run passes them (their surface
+  /// points resolved first; docs/scaling.md), so that memory follows the area in view, not
+  /// the mission's. The outputs are the same; runs that need the whole map keep it (a map
+  /// viewer, --save-map, --load-map, occlusion-aware carving, pose refinement).
+  bool evict_blocks = true;
 
   /// A surface voxel must be the first return in this many views: ghosts of the elevation
   /// ambiguity are first returns in fewer views than a real surface, seen from every view

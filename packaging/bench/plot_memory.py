@@ -31,14 +31,14 @@ def main(argv):
         colour = f"C{i}"
         carving = [r for r in rows if r["stage"] == "carve"]
         frames = [int(r["frames_carved"]) for r in carving]
-        ax.plot(frames, [float(r["rss_mb"]) / 1000 for r in carving], "-", color=colour,
+        ax.plot(frames, [float(r["rss_mb"]) for r in carving], "-", color=colour,
                 label=f"{label}: resident while carving")
-        ax.plot(frames, [float(r["rss_anon_mb"]) / 1000 for r in carving], ":", color=colour)
+        ax.plot(frames, [float(r["rss_anon_mb"]) for r in carving], ":", color=colour)
         last = rows[-1]
-        ax.plot([int(last["frames_carved"])], [float(last["peak_rss_mb"]) / 1000], "o",
+        ax.plot([int(last["frames_carved"])], [float(last["peak_rss_mb"])], "o",
                 color=colour, label=f"{label}: peak of the run (occlusion, mesh)")
     ax.set_xlabel("frames carved")
-    ax.set_ylabel("memory, GB (dotted: anonymous)")
+    ax.set_ylabel("memory, MB (dotted: anonymous)")
     ax.set_title("Reconstruction memory against mission length")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)

@@ -5,6 +5,7 @@
 
 #include <array>
 
+#include "carve/voxel_map.h"
 #include "common/angles.h"
 #include "common/error.h"
 #include "io/frame_source.h"
@@ -153,6 +154,44 @@ TEST_F(CarveStageTest, WithPoseRefinementOffFramesCarveExactlyAtTheirNavigationP
     ASSERT_EQ(va, vb) << "block " << block;
   }
   EXPECT_GT(a->occupiedCount(), 0u);
+}
+
+// An evicting run (pipeline/evicting_surface.h) hears of each carved frame before the memory
+// budget's check, so the check sees the map after its finished pages have gone.
+TEST_F(CarveStageTest, TheBudgetCheckSeesTheMapAfterEachFramesEviction) {
+  const Mission mission = ringMission(8, {3, 5});
+  Skipped skipped;
+  SilentProgress progress;
+  const auto posed = placeFrames(mission, {}, skipped.sink());
+  NoiseChoice none;
+  none.detector = detector_;
+  const DenoisedFrames frames(mission, mission.sonar, none);
+  const CarveStage stage(mission.sonar, {}, pool_);
+  std::vector<std::size_t> positions;
+  std::size_t held_bytes = 0, left_bytes = 0;
+  const FrameCarved evict = [&](std::size_t position, const Eigen::Isometry3d&, Carver& carver) {
+    positions.push_back(position);
+    VoxelMap* map = carver.evictableMap();
+    if (map == nullptr) {
+      ADD_FAILURE() << "the fast engine's map can be evicted";
+      return;
+    }
+    held_bytes = map->memoryBytes();
+    for (std::size_t page = 0; page < map->pageCount(); ++page) {
+      map->releasePage(page);
+    }
+    left_bytes = map->memoryBytes();
+  };
+  std::size_t checks = 0;
+  const CarvedFrameCheck check = [&](const CarvedSoFar& at) {
+    ++checks;
+    EXPECT_EQ(at.map_bytes, static_cast<double>(left_bytes));
+    EXPECT_LT(left_bytes, held_bytes);  // each frame's pages were there, and went
+  };
+  stage.run(posed, stage.mapBounds(posed), frames, progress, nullptr, skipped.sink(), check, evict);
+  // Frames that failed to load are not reported: their place in the order is skipped.
+  EXPECT_EQ(positions, (std::vector<std::size_t>{0, 1, 2, 4, 6, 7}));
+  EXPECT_EQ(checks, 6u);
 }
 
 class StopAfter final : public Progress {

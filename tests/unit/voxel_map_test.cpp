@@ -51,6 +51,10 @@ TEST(VoxelMapStorage, CarvedAndUnknownVoxelsOnlyAreKeptAsAMaskAndReadBackTheSame
 TEST(VoxelMapStorage, MasksCostAThirtySecondOfValues) {
   VoxelMap masks(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)));
   VoxelMap values(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)));
+  // The block table's pages first: what is measured is the blocks' contents.
+  for (VoxelMap* map : {&masks, &values}) {
+    map->holdPages(Eigen::Vector3i::Zero(), map->blockDims() - Eigen::Vector3i::Ones());
+  }
   const std::size_t empty_bytes = masks.memoryBytes();
   Values edge{}, lit{};
   edge.fill(VoxelMap::kUnknown);
@@ -102,6 +106,50 @@ TEST(VoxelMapStorage, AMapWithCountsKeepsValuesForItsCounts) {
   map.storeBlock(0, edge.data(), 1);
   EXPECT_EQ(map.state(0), VoxelMap::BlockState::Mixed);
   ASSERT_NE(map.views(0), nullptr);
+}
+
+TEST(VoxelMapPages, AnEmptyRegionCostsNoPageAndAReleasedPageReadsUnknown) {
+  // 4 x 4 x 4 m at 2 cm: 25^3 blocks, 4^3 pages of 8^3 blocks.
+  VoxelMap map(0.02,
+               Eigen::AlignedBox3d(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3.99, 3.99, 3.99)));
+  ASSERT_EQ(map.pageDims(), Eigen::Vector3i(4, 4, 4));
+  const std::size_t empty_bytes = map.memoryBytes();
+  EXPECT_EQ(map.pagesHeld(), 0u);
+  Values lit{};
+  lit.fill(VoxelMap::kUnknown);
+  lit[3] = 7.0f;
+  const std::size_t b = map.blockIndex({20, 9, 1});  // page (2, 1, 0)
+  map.storeBlock(b, lit.data(), 1);
+  EXPECT_EQ(map.pagesHeld(), 1u);
+  EXPECT_EQ(VoxelMap::pageOf(b), map.pageIndex({2, 1, 0}));
+  EXPECT_EQ(map.blockCoords(b), Eigen::Vector3i(20, 9, 1));
+  EXPECT_EQ(map.value(map.voxelIndex(b, 3)), 7.0f);
+  const std::size_t one_block_bytes = map.memoryBytes();
+  EXPECT_GT(one_block_bytes, empty_bytes);
+  // The other 63 pages cost nothing, whatever their region.
+  EXPECT_EQ(map.blockCount(VoxelMap::BlockState::Unknown), map.blockCount() - 1);
+  map.releasePage(VoxelMap::pageOf(b));
+  EXPECT_EQ(map.pagesHeld(), 0u);
+  EXPECT_EQ(map.state(b), VoxelMap::BlockState::Unknown);
+  EXPECT_EQ(map.value(map.voxelIndex(b, 3)), VoxelMap::kUnknown);
+  // Its value slot is reused by the next block stored, in another page.
+  map.storeBlock(map.blockIndex({0, 0, 0}), lit.data(), 2);
+  EXPECT_EQ(map.memoryBytes(), one_block_bytes);
+  EXPECT_EQ(map.blockCount(VoxelMap::BlockState::Mixed), 1u);
+}
+
+TEST(VoxelMapPages, RowOrderVisitsTheBoxsBlocksOnce) {
+  VoxelMap map(0.02, Eigen::AlignedBox3d(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1.5, 0.7, 0.3)));
+  std::vector<bool> seen(map.blockCount(), false);
+  for (std::size_t n = 0; n < map.boxBlockCount(); ++n) {
+    const std::size_t b = map.blockAtRowOrder(n);
+    ASSERT_LT(b, map.blockCount());
+    EXPECT_FALSE(seen[b]);
+    seen[b] = true;
+    EXPECT_EQ(map.rowOrderOf(b), n);
+    const Eigen::Vector3i rel = map.blockCoords(b);
+    EXPECT_TRUE((rel.array() >= 0).all() && (rel.array() < map.blockDims().array()).all());
+  }
 }
 
 }  // namespace
