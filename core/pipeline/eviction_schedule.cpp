@@ -36,6 +36,20 @@ Eigen::Vector3i EvictionSchedule::cellCoords(std::size_t cell) const {
                          static_cast<int>(cell / (nx * ny)));
 }
 
+std::vector<std::int32_t> EvictionSchedule::latestAround(
+    const std::vector<std::int32_t>& at) const {
+  std::vector<std::int32_t> latest(at.size(), kNever);
+  for (std::size_t c = 0; c < at.size(); ++c) {
+    if (last_[c] == kNever) {
+      continue;
+    }
+    std::int32_t l = at[c];
+    forEachFaceNeighbour(c, [&](std::size_t n) { l = std::max(l, at[n]); });
+    latest[c] = l;
+  }
+  return latest;
+}
+
 EvictionSchedule::EvictionSchedule(const std::vector<CellSpan>& spans, const Eigen::Vector3i& cells)
     : spans_(spans), cells_(cells) {
   const auto n_cells = static_cast<std::size_t>(cells.x()) * cells.y() * cells.z();
@@ -55,15 +69,7 @@ EvictionSchedule::EvictionSchedule(const std::vector<CellSpan>& spans, const Eig
       last_[c] = static_cast<std::int32_t>(f);
     });
   }
-  settled_.assign(n_cells, kNever);
-  for (std::size_t c = 0; c < n_cells; ++c) {
-    if (last_[c] == kNever) {
-      continue;
-    }
-    std::int32_t s = last_[c];
-    forEachFaceNeighbour(c, [&](std::size_t n) { s = std::max(s, last_[n]); });
-    settled_[c] = s;
-  }
+  settled_ = latestAround(last_);
   ready_.assign(spans_.size(), kNever);
   freed_.assign(n_cells, kNever);
   for (std::size_t f = 0; f < spans_.size(); ++f) {
@@ -76,15 +82,9 @@ EvictionSchedule::EvictionSchedule(const std::vector<CellSpan>& spans, const Eig
     ready_[f] = r;
     forEachCell(spans_[f], [&](std::size_t c) { freed_[c] = std::max(freed_[c], r); });
   }
-  released_.assign(n_cells, kNever);
+  released_ = latestAround(settled_);
   for (std::size_t c = 0; c < n_cells; ++c) {
-    if (last_[c] == kNever) {
-      continue;
-    }
-    std::int32_t release_at = settled_[c];
-    forEachFaceNeighbour(c, [&](std::size_t n) { release_at = std::max(release_at, settled_[n]); });
-    released_[c] = release_at;
-    freed_[c] = std::max(freed_[c], release_at);
+    freed_[c] = std::max(freed_[c], released_[c]);
   }
   settled_at_.resize(spans_.size());
   ready_at_.resize(spans_.size());

@@ -70,6 +70,9 @@ class EvictionSchedule {
   void forEachCell(const CellSpan& span, F&& f) const;
   template <typename F>
   void forEachFaceNeighbour(std::size_t cell, F&& f) const;
+  /// Per cell a frame touches, the latest of `at` over the cell and its face neighbours; kNever
+  /// for cells no frame touches.
+  std::vector<std::int32_t> latestAround(const std::vector<std::int32_t>& at) const;
 
   std::vector<CellSpan> spans_;
   Eigen::Vector3i cells_;
