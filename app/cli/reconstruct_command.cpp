@@ -125,9 +125,7 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   progress.finish();
   std::cerr << "denoising: " << result.detector << ", " << result.denoising << "\n";
   if (result.keep_level.frames > 0) {
-    std::cerr << "beam-aware carving: voxels kept above " << result.keep_level.level
-              << " counts on the beam's axis (" << params.carve.dynamic_range_db
-              << " dB below the bright returns, " << result.keep_level.bright_returns << ")\n";
+    std::cerr << describeKeepLevel(result.keep_level, params.carve.dynamic_range_db) << "\n";
   }
   for (const FrameProblem& p : result.skipped) {
     std::cerr << "skipped: " << p.message << "\n";

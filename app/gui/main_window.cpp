@@ -456,11 +456,8 @@ void MainWindow::wireRunner() {
                     .arg(QString::fromStdString(result->detector),
                          QString::fromStdString(result->denoising)));
             if (result->keep_level.frames > 0) {
-              log(tr("beam-aware carving: voxels kept above %1 counts on the beam's axis (%2 dB "
-                     "below the bright returns, %3)")
-                      .arg(result->keep_level.level, 0, 'f', 1)
-                      .arg(run_params_.carve.dynamic_range_db, 0, 'f', 1)
-                      .arg(result->keep_level.bright_returns, 0, 'f', 0));
+              log(QString::fromStdString(
+                  describeKeepLevel(result->keep_level, run_params_.carve.dynamic_range_db)));
             }
             log(summary);
             progress_label_->setText(summary);

@@ -1,6 +1,8 @@
 // Parameters of space carving, with the seed paper's defaults. SI units; YAML in degrees.
 #pragma once
 
+#include <algorithm>
+
 #include <Eigen/Geometry>
 #include <optional>
 
@@ -47,6 +49,22 @@ struct CarveParams {
   /// noise later.
   int carve_votes = 1;
 };
+
+/// An image of whole counts holds under half a count where it reads 0.
+inline constexpr double kDarkPixelCounts = 0.5;
+
+/// The keep level a frame carves with. With exact dark pixels (whole counts, no detector) it
+/// is at least what a dark pixel bounds at the -3 dB edge of the aperture (half a count over
+/// half the beam's power: 1 count), so that a dark pixel always carves inside +-aperture/2, as
+/// in the seed paper: a mission whose bright returns are only a few tens of counts would
+/// otherwise keep returns under one count, which its images cannot show, and carve nothing.
+inline double effectiveKeepLevel(const CarveParams& params) {
+  if (params.dark_pixels != CarveParams::DarkPixels::Exact) {
+    return params.keep_level;
+  }
+  constexpr double kGainAtApertureEdge = 0.5;  // -3 dB
+  return std::max(params.keep_level, kDarkPixelCounts / kGainAtApertureEdge);
+}
 
 /// Whether a map carved with `params` keeps each voxel's view and vote counts (2 bytes a
 /// voxel more in every block that holds values).

@@ -41,8 +41,7 @@ struct FrameView {
   int carve_votes = 1;
 };
 
-// An image of whole counts holds under half a count where it reads 0.
-constexpr float kDarkPixelLevel = 0.5f;
+constexpr float kDarkPixelLevel = static_cast<float>(kDarkPixelCounts);
 
 // Beam-aware: how far off the axis this frame can carve. A pixel carves a voxel where its bound
 // I / p(theta) is at or below the keep level, so nowhere p(theta) is under the faintest
@@ -287,7 +286,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
                   T_sonar_world.linear().cast<float>(), T_sonar_world.translation().cast<float>()};
   frame.beam_aware = carvesMainLobe(sonar, params_);
   frame.dark_is_exact = params_.dark_pixels == CarveParams::DarkPixels::Exact;
-  frame.keep_level = static_cast<float>(params_.keep_level);
+  frame.keep_level = static_cast<float>(effectiveKeepLevel(params_));
   frame.carve_votes = params_.carve_votes;
   frame.left_normal = geometry_.leftNormal().head<2>().cast<float>();
   frame.right_normal = geometry_.rightNormal().head<2>().cast<float>();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <sstream>
 
 #include "common/error.h"
 
@@ -15,6 +16,19 @@ constexpr double kBrightQuantile = 0.9999;
 constexpr double kKeptPerFrame = 0.01;
 
 }  // namespace
+
+std::string describeKeepLevel(const KeepLevel& level, double dynamic_range_db) {
+  std::ostringstream line;
+  line << "beam-aware carving: voxels kept above " << level.level << " counts on the beam's axis (";
+  if (level.raised_to_a_count) {
+    line << "raised to what a dark pixel bounds at the aperture's edge: the bright returns, "
+         << level.bright_returns << " counts, are too faint for " << dynamic_range_db
+         << " dB in whole counts)";
+  } else {
+    line << dynamic_range_db << " dB below the bright returns, " << level.bright_returns << ")";
+  }
+  return line.str();
+}
 
 KeepLevel measureKeepLevel(std::size_t count,
                            const std::function<std::optional<cv::Mat>(std::size_t)>& image,

@@ -8,6 +8,7 @@
 #include <functional>
 #include <opencv2/core.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "common/progress.h"
@@ -19,7 +20,13 @@ struct KeepLevel {
   double bright_returns = 0.0;  ///< the 99.99th percentile of lit pixels (counts)
   double level = 0.0;           ///< bright_returns lowered by the dynamic range
   std::size_t frames = 0;       ///< frames it was measured on
+  /// The level was raised to what a dark pixel of whole counts bounds at the aperture's edge
+  /// (effectiveKeepLevel): the bright returns are too faint for the dynamic range.
+  bool raised_to_a_count = false;
 };
+
+/// One line for the terminal and the workbench's log: the level, and why.
+std::string describeKeepLevel(const KeepLevel& level, double dynamic_range_db);
 
 /// Measured on the `count` images `image(n)` gives (CV_32F, after the detector; nullopt: left
 /// out). Level 0 when no pixel is lit. Cancellable (throws Cancelled).

@@ -110,6 +110,9 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     stage.carve.dark_pixels = noise.detector.mode == DetectorMode::None
                                   ? CarveParams::DarkPixels::Exact
                                   : CarveParams::DarkPixels::BelowDetection;
+    const double used = effectiveKeepLevel(stage.carve);
+    result.keep_level.raised_to_a_count = used > stage.carve.keep_level;
+    result.keep_level.level = stage.carve.keep_level = used;
   }
   const CarveStage carving(sonar_, stage, pool_);
   std::optional<MapUpdateSink> updates;

@@ -33,6 +33,7 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
     report["beam_aware_carving"] = {{"bright_returns", result.keep_level.bright_returns},
                                     {"dynamic_range_db", params.carve.dynamic_range_db},
                                     {"keep_level", result.keep_level.level},
+                                    {"raised_to_a_count", result.keep_level.raised_to_a_count},
                                     {"frames_measured", result.keep_level.frames}};
   }
   if (!result.refinement.empty()) {

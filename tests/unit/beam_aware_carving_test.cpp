@@ -41,10 +41,11 @@ class BeamAwareCarving : public ::testing::Test {
   const Eigen::Vector3d below_target_ = target_ + Eigen::Vector3d(0.0, 0.0, 0.55);
 
   std::unique_ptr<Carver> make(bool beam_aware,
-                               CarveParams::DarkPixels dark = CarveParams::DarkPixels::Exact) {
+                               CarveParams::DarkPixels dark = CarveParams::DarkPixels::Exact,
+                               double keep_level = kKeepLevel) {
     CarveParams params;
     params.beam_aware = beam_aware;
-    params.keep_level = kKeepLevel;
+    params.keep_level = keep_level;
     params.dark_pixels = dark;
     params.region = Eigen::AlignedBox3d(target_ - Eigen::Vector3d::Constant(0.6),
                                         target_ + Eigen::Vector3d::Constant(0.6));
@@ -170,6 +171,24 @@ TEST_F(BeamAwareCarving, BelowDetectionDarkPixelsCarveOnlyInsideTheAperture) {
   darkViewFromBelow(*carver, 15.0);
   EXPECT_EQ(carver->value(voxelOf(target_)), VoxelMap::kUnknown);
   EXPECT_EQ(carver->value(voxelOf(below_target_)), 0.0f);
+}
+
+TEST_F(BeamAwareCarving, ADarkPixelCarvesInsideTheApertureOnAMissionOfFaintReturns) {
+  // A mission whose bright returns are 25 counts puts the keep level 20 dB below at a quarter
+  // of a count, under what an image of whole counts can show. A dark pixel (under half a
+  // count) still carves inside +-aperture/2, where the beam keeps at least half its power, as
+  // in the seed paper: at 7.4 degrees up (inside) it carves, at 15 degrees up (-8 dB) not.
+  auto carver = make(true, CarveParams::DarkPixels::Exact, 0.25);
+  darkViewFromBelow(*carver, 15.0);
+  EXPECT_EQ(carver->value(voxelOf(target_)), VoxelMap::kUnknown);
+  EXPECT_EQ(carver->value(voxelOf(below_target_)), 0.0f);
+  // A lit pixel of two counts on the axis is no dark pixel: it keeps its voxel.
+  const Eigen::Isometry3d on_axis = levelSonarAt(target_.z());
+  cv::Mat dim(sonar_.rows(), sonar_.cols(), CV_32F, cv::Scalar(0.0f));
+  dim.at<float>(*sonar_.range().binOf(target_.x()), *sonar_.bearings().beamOf(0.0)) = 2.0f;
+  auto lit = make(true, CarveParams::DarkPixels::Exact, 0.25);
+  lit->integrate(dim, on_axis, ++stamp_);
+  EXPECT_GT(lit->value(voxelOf(target_)), 1.0f);
 }
 
 }  // namespace
