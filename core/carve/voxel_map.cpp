@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
 #include "common/error.h"
 #include "common/floor_div.h"
@@ -135,6 +136,101 @@ void VoxelMap::releasePage(std::size_t page) {
   --pages_held_;
 }
 
+namespace {
+
+// packPage's bytes: the page's states, stamps and visits, then each Mixed block's values (and
+// counts) and each Partial block's mask, in block order.
+template <typename T>
+void appendBytes(std::vector<std::uint8_t>& out, const T* data, std::size_t count) {
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(data);
+  out.insert(out.end(), bytes, bytes + count * sizeof(T));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> VoxelMap::packPage(std::size_t page) const {
+  std::vector<std::uint8_t> out;
+  const Page* p = pages_[page].get();
+  if (p == nullptr) {
+    throw Error("voxel map", "page " + std::to_string(page), "expected a held page to pack");
+  }
+  appendBytes(out, p->state.data(), kPageBlocks);
+  appendBytes(out, p->stamp.data(), kPageBlocks);
+  appendBytes(out, p->visited.data(), kPageBlocks);
+  for (int i = 0; i < kPageBlocks; ++i) {
+    const auto in = static_cast<std::size_t>(i);
+    if (p->state[in] == BlockState::Mixed) {
+      appendBytes(out, slotValues(p->slot[in]), kBlockVoxels);
+      if (with_counts_) {
+        appendBytes(out, slotCounts(p->slot[in]), kCountBytes);
+      }
+    } else if (p->state[in] == BlockState::Partial) {
+      appendBytes(out, slotMask(p->slot[in]), kMaskWords);
+    }
+  }
+  return out;
+}
+
+void VoxelMap::unpackPage(std::size_t page, const std::vector<std::uint8_t>& bytes) {
+  const std::string where = "page " + std::to_string(page);
+  if (pages_[page] != nullptr) {
+    throw Error("voxel map", where, "expected a page not held to unpack into");
+  }
+  std::size_t at = 0;
+  const auto take = [&](auto* data, std::size_t count) {
+    const std::size_t n = count * sizeof(*data);
+    if (at + n > bytes.size()) {
+      throw Error("voxel map", where,
+                  "packed page ends early: " + std::to_string(bytes.size()) + " bytes");
+    }
+    std::copy_n(bytes.data() + at, n, reinterpret_cast<std::uint8_t*>(data));
+    at += n;
+  };
+  auto held = std::make_unique<Page>();
+  held->slot.fill(-1);
+  take(held->state.data(), kPageBlocks);
+  take(held->stamp.data(), kPageBlocks);
+  take(held->visited.data(), kPageBlocks);
+  pages_[page] = std::move(held);
+  ++pages_held_;
+  try {
+    Page& p = *pages_[page];
+    for (int i = 0; i < kPageBlocks; ++i) {
+      const auto in = static_cast<std::size_t>(i);
+      const std::size_t block = page * kPageBlocks + in;
+      if (p.state[in] == BlockState::Mixed) {
+        p.slot[in] = takeValueSlot(block);
+        take(slotValues(p.slot[in]), kBlockVoxels);
+        if (with_counts_) {
+          take(slotCounts(p.slot[in]), kCountBytes);
+        }
+      } else if (p.state[in] == BlockState::Partial) {
+        p.slot[in] = takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
+          mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
+        });
+        take(slotMask(p.slot[in]), kMaskWords);
+      } else if (p.state[in] != BlockState::Unknown && p.state[in] != BlockState::Free) {
+        p.state[in] = BlockState::Unknown;
+        throw Error("voxel map", where, "packed page holds an unknown block state");
+      }
+    }
+    if (at != bytes.size()) {
+      throw Error("voxel map", where,
+                  "packed page has " + std::to_string(bytes.size() - at) + " bytes too many");
+    }
+  } catch (const Error&) {
+    // Blocks not reached yet hold no slot: they go with the page, the others give theirs back.
+    Page& p = *pages_[page];
+    for (std::size_t in = 0; in < static_cast<std::size_t>(kPageBlocks); ++in) {
+      if (p.slot[in] < 0) {
+        p.state[in] = BlockState::Unknown;
+      }
+    }
+    releasePage(page);
+    throw;
+  }
+}
+
 bool VoxelMap::blockSpan(const Eigen::AlignedBox3d& box, Eigen::Vector3i& lo,
                          Eigen::Vector3i& hi) const {
   const Eigen::AlignedBox3d inside = box.intersection(bounds());
@@ -263,6 +359,20 @@ void VoxelMap::compactColdBlocks(std::uint32_t now, std::uint32_t cold_after) {
   }
 }
 
+std::int32_t VoxelMap::takeValueSlot(std::size_t block) {
+  const std::int32_t slot = takeSlot(free_slots_, slots_used_, kChunkBlocks, [&] {
+    chunks_.push_back(std::make_unique<float[]>(kChunkBlocks * kBlockVoxels));
+    if (with_counts_) {
+      count_chunks_.push_back(std::make_unique<std::uint8_t[]>(kChunkBlocks * kCountBytes));
+    }
+  });
+  if (slot_block_.size() < slots_used_) {
+    slot_block_.resize(slots_used_, -1);
+  }
+  slot_block_[static_cast<std::size_t>(slot)] = static_cast<std::int32_t>(block);
+  return slot;
+}
+
 void VoxelMap::releaseSlot(std::size_t block) {
   if (pages_[pageOf(block)] == nullptr) {
     return;
@@ -309,16 +419,7 @@ void VoxelMap::storeBlock(std::size_t block, const float* new_values, std::uint3
   if (state(block) != BlockState::Mixed) {
     std::lock_guard lock(storage_mutex_);
     releaseSlot(block);
-    slotOf(block) = takeSlot(free_slots_, slots_used_, kChunkBlocks, [&] {
-      chunks_.push_back(std::make_unique<float[]>(kChunkBlocks * kBlockVoxels));
-      if (with_counts_) {
-        count_chunks_.push_back(std::make_unique<std::uint8_t[]>(kChunkBlocks * kCountBytes));
-      }
-    });
-    if (slot_block_.size() < slots_used_) {
-      slot_block_.resize(slots_used_, -1);
-    }
-    slot_block_[static_cast<std::size_t>(slotOf(block))] = static_cast<std::int32_t>(block);
+    slotOf(block) = takeValueSlot(block);
     stateOf(block) = BlockState::Mixed;
     if (with_counts_ && new_counts == nullptr) {
       std::fill_n(slotCounts(slotOf(block)), kCountBytes, std::uint8_t{0});

@@ -96,6 +96,12 @@ class VoxelMap {
   /// Lets a page's blocks go: their contents and the page's table entries; they read Unknown
   /// afterwards. Not thread safe.
   void releasePage(std::size_t page);
+  /// A held page as bytes: its table entries and its blocks' contents (and counts), so that
+  /// it can be let go and held again later exactly as it was (carve/page_spill.h).
+  std::vector<std::uint8_t> packPage(std::size_t page) const;
+  /// Holds a page that is not held from packPage's bytes. Throws Error if they are not a
+  /// page of this map. Not thread safe.
+  void unpackPage(std::size_t page, const std::vector<std::uint8_t>& bytes);
   /// The box-relative blocks [lo, hi] (inclusive) that `box` (world) touches; false if none.
   bool blockSpan(const Eigen::AlignedBox3d& box, Eigen::Vector3i& lo, Eigen::Vector3i& hi) const;
   BlockState state(std::size_t block) const {
@@ -219,6 +225,8 @@ class VoxelMap {
   std::vector<std::unique_ptr<std::uint64_t[]>> mask_chunks_;  // capacity reserved up front
   std::size_t mask_slots_used_ = 0;
   std::vector<std::int32_t> free_mask_slots_;
+  /// A value slot (and counts) for `block`, which becomes its owner (under storage_mutex_).
+  std::int32_t takeValueSlot(std::size_t block);
   /// Gives back the block's slot, if it holds one (under storage_mutex_).
   void releaseSlot(std::size_t block);
   /// Keeps `mask` (bit i: voxel i carved) as the block's contents (under storage_mutex_).

@@ -46,7 +46,7 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
                                  const Eigen::AlignedBox3d& bounds, const DenoisedFrames& source,
                                  Progress& progress, MapUpdateSink* updates,
                                  const std::function<void(const FrameProblem&)>& skip,
-                                 const CarvedFrameCheck& check, const FrameCarved& carved) const {
+                                 const CarvedFrameCheck& check, const CarveHooks& hooks) const {
   CarveStageResult result;
   result.carve = params_.carve;
   result.carve.region = bounds;
@@ -75,6 +75,9 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
       break;
     }
     PosedFrame f = frames[n];
+    if (hooks.starting) {
+      hooks.starting(n, *result.carver);
+    }
     Frame frame;
     try {
       frame = source.load(f.index);
@@ -98,8 +101,8 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
                          stamp);
     }
     progress.report("carve", n + 1, frames.size());
-    if (carved) {
-      carved(n, f.T_world_sonar, *result.carver);
+    if (hooks.carved) {
+      hooks.carved(n, f.T_world_sonar, *result.carver);
     }
     if (check) {
       check({"carving", n + 1, frames.size(), static_cast<double>(result.carver->memoryBytes())});

@@ -62,6 +62,12 @@ using CarvedFrameCheck = std::function<void(const CarvedSoFar&)>;
 /// Hears of each frame carved: its place in the carving order, the pose it carved at, and the
 /// carver (which it may let release finished parts of its map, pipeline/evicting_surface.h).
 using FrameCarved = std::function<void(std::size_t position, const Eigen::Isometry3d&, Carver&)>;
+/// Hears of each frame of the carving order before it is loaded and carved (`starting`: its
+/// place and the carver, called for frames that then fail to load too) and after (`carved`).
+struct CarveHooks {
+  std::function<void(std::size_t position, Carver&)> starting;
+  FrameCarved carved;
+};
 
 class CarveStage {
  public:
@@ -74,12 +80,12 @@ class CarveStage {
   /// Carves `frames` read through `source` into a map covering `bounds` (mapBounds(frames)).
   /// A frame that fails to load is passed to `skip`; `updates`, when set, receives each
   /// carved frame and the map's changes; `check`, when set, is called after each frame and
-  /// may throw to stop the run; `carved`, when set, hears of each carved frame before the
-  /// check. Cancellable between frames.
+  /// may throw to stop the run; `hooks`, when set, hear of each frame before it is loaded and
+  /// after it is carved (before the check). Cancellable between frames.
   CarveStageResult run(const std::vector<PosedFrame>& frames, const Eigen::AlignedBox3d& bounds,
                        const DenoisedFrames& source, Progress& progress, MapUpdateSink* updates,
                        const std::function<void(const FrameProblem&)>& skip,
-                       const CarvedFrameCheck& check = {}, const FrameCarved& carved = {}) const;
+                       const CarvedFrameCheck& check = {}, const CarveHooks& hooks = {}) const;
 
  private:
   void refine(CarveStageResult& result, const DenoisedFrames& source, Progress& progress,

@@ -13,13 +13,15 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 EvictingSurface::EvictingSurface(std::vector<PosedFrame> frames, const SonarModel& sonar,
-                                 CarveParams carve, std::uint32_t min_views, ThreadPool& pool)
+                                 CarveParams carve, std::uint32_t min_views, ThreadPool& pool,
+                                 std::int32_t aside_gap)
     : frames_(std::move(frames)),
       carved_(frames_.size(), false),
       sonar_(sonar),
       carve_(std::move(carve)),
       min_views_(min_views),
       pool_(pool),
+      aside_gap_(aside_gap),
       resolver_({}, {}, sonar, carve_) {
   resolver_.requireObservations(min_views);
 }
@@ -45,7 +47,7 @@ void EvictingSurface::plan(const VoxelMap& map) {
       spans[f] = {page(lo), page(hi)};
     }
   }
-  schedule_ = std::make_unique<EvictionSchedule>(spans, map.pageDims());
+  schedule_ = std::make_unique<EvictionSchedule>(spans, map.pageDims(), aside_gap_);
   leaving_.assign(map.pageCount(), 0);
 }
 
@@ -59,6 +61,22 @@ void EvictingSurface::frameCarved(std::size_t position, const Eigen::Isometry3d&
   peak_bytes_ = std::max(peak_bytes_, map.memoryBytes() + resolver_.memoryBytes());
   for (; next_step_ <= position; ++next_step_) {
     runStep(next_step_, map);
+  }
+}
+
+void EvictingSurface::frameStarting(std::size_t position, VoxelMap& map) {
+  if (!schedule_) {
+    plan(map);
+  }
+  // Frames before it were carved or failed: what they made possible comes first, so that every
+  // page is set aside before it is held again.
+  for (; next_step_ < position; ++next_step_) {
+    runStep(next_step_, map);
+  }
+  if (spill_) {
+    for (std::uint32_t c : schedule_->cellsBackBefore(position)) {
+      spill_->holdAgain(map, c);
+    }
   }
 }
 
@@ -91,6 +109,16 @@ void EvictingSurface::runStep(std::size_t step, VoxelMap& map) {
     map.releasePage(c);
   }
   takeSurface(schedule_->cellsFreedAt(step), map);
+  for (std::uint32_t c : schedule_->cellsAsideAt(step)) {
+    if (!map.pageHeld(c)) {
+      continue;
+    }
+    if (!spill_) {
+      spill_ = std::make_unique<PageSpill>();
+    }
+    spill_->setAside(map, c);
+    aside_file_bytes_ = std::max<std::uint64_t>(aside_file_bytes_, spill_->fileBytes());
+  }
   occlusion_ms_ += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 

@@ -7,7 +7,9 @@
 // map's pages that no frame carves and no neighbour reads any more, resolves the frames that
 // became ready, and takes the surface points of the cells every frame seeing them has resolved. The
 // surface is the in-memory path's, point for point: the same voxels are candidates, counted by the
-// same frames and resolved against the same occluders.
+// same frames and resolved against the same occluders. Pages the survey leaves and comes back to
+// more than `aside_gap` frames later are set aside in a temporary file meanwhile
+// (carve/page_spill.h) and held again, as they were, before the frame that comes back.
 #pragma once
 
 #include <memory>
@@ -15,6 +17,7 @@
 
 #include "carve/carve_params.h"
 #include "carve/occupancy_export.h"
+#include "carve/page_spill.h"
 #include "carve/voxel_map.h"
 #include "common/thread_pool.h"
 #include "occlusion/occlusion_resolver.h"
@@ -29,8 +32,11 @@ class EvictingSurface {
   /// `frames` in carving order at their planned poses; `carve` the parameters the map is
   /// carved with (its region the map's box).
   EvictingSurface(std::vector<PosedFrame> frames, const SonarModel& sonar, CarveParams carve,
-                  std::uint32_t min_views, ThreadPool& pool);
+                  std::uint32_t min_views, ThreadPool& pool, std::int32_t aside_gap = 0);
 
+  /// Before frame `position` of the carving order is carved (or fails to load): holds again
+  /// the pages it touches that were set aside.
+  void frameStarting(std::size_t position, VoxelMap& map);
   /// After frame `position` of the carving order was carved at `T_world_sonar` into `map`.
   /// Frames not reported (they failed to load) are neither counted nor resolved.
   void frameCarved(std::size_t position, const Eigen::Isometry3d& T_world_sonar, VoxelMap& map);
@@ -47,6 +53,9 @@ class EvictingSurface {
   /// Pages of the map released before the last frame was carved.
   std::size_t pagesFreedEarly() const { return pages_freed_early_; }
   const EvictionSchedule* schedule() const { return schedule_.get(); }
+  /// Pages set aside over the run, and the most bytes their file held.
+  std::size_t pagesSetAside() const { return spill_ ? spill_->pagesSetAside() : 0; }
+  std::uint64_t asideFileBytes() const { return aside_file_bytes_; }
 
  private:
   void plan(const VoxelMap& map);
@@ -60,7 +69,10 @@ class EvictingSurface {
   CarveParams carve_;
   std::uint32_t min_views_;
   ThreadPool& pool_;
+  std::int32_t aside_gap_;
   std::unique_ptr<EvictionSchedule> schedule_;
+  std::unique_ptr<PageSpill> spill_;  // made when a page is first set aside
+  std::uint64_t aside_file_bytes_ = 0;
   OcclusionResolver resolver_;
   std::size_t next_step_ = 0;
   SurfacePoints surface_;

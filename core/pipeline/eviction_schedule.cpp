@@ -50,11 +50,14 @@ std::vector<std::int32_t> EvictionSchedule::latestAround(
   return latest;
 }
 
-EvictionSchedule::EvictionSchedule(const std::vector<CellSpan>& spans, const Eigen::Vector3i& cells)
+EvictionSchedule::EvictionSchedule(const std::vector<CellSpan>& spans, const Eigen::Vector3i& cells,
+                                   std::int32_t aside_gap)
     : spans_(spans), cells_(cells) {
   const auto n_cells = static_cast<std::size_t>(cells.x()) * cells.y() * cells.z();
   first_.assign(n_cells, kNever);
   last_.assign(n_cells, kNever);
+  aside_at_.resize(spans_.size());
+  back_before_.resize(spans_.size());
   for (std::size_t f = 0; f < spans_.size(); ++f) {
     CellSpan& s = spans_[f];
     s.lo = s.lo.cwiseMax(Eigen::Vector3i::Zero());
@@ -62,11 +65,15 @@ EvictionSchedule::EvictionSchedule(const std::vector<CellSpan>& spans, const Eig
     if (s.empty()) {
       continue;
     }
+    const auto frame = static_cast<std::int32_t>(f);
     forEachCell(s, [&](std::size_t c) {
       if (first_[c] == kNever) {
-        first_[c] = static_cast<std::int32_t>(f);
+        first_[c] = frame;
+      } else if (aside_gap > 0 && frame - last_[c] > aside_gap) {
+        aside_at_[static_cast<std::size_t>(last_[c])].push_back(static_cast<std::uint32_t>(c));
+        back_before_[f].push_back(static_cast<std::uint32_t>(c));
       }
-      last_[c] = static_cast<std::int32_t>(f);
+      last_[c] = frame;
     });
   }
   settled_ = latestAround(last_);

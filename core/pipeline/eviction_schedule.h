@@ -14,6 +14,10 @@
 // Blocks go long before candidates where lines overlap: on a lawnmower whose swath (20 m at
 // 10 m range) is four times its line spacing, a cell is carved by two or three lines but
 // seen by frames whose own cells are carved by lines further on (docs/scaling.md).
+// A cell the frames leave and come back to more than `gap` frames later (a lawnmower's next
+// line) can be set aside meanwhile (carve/page_spill.h): after the frame before the gap
+// (aside), to be held again before the frame after it (back). Neither a cell set aside nor its
+// neighbours settle during the gap: settled() is at or after its last frame.
 // Each step n (after frame n is carved) lists what becomes possible at n.
 #pragma once
 
@@ -38,8 +42,10 @@ class EvictionSchedule {
   static constexpr std::int32_t kNever = -1;
 
   /// `spans` of frames 0..n-1 in carving order, over a grid of `cells` cells (index
-  /// (z * cells.y() + y) * cells.x() + x, as VoxelMap::pageIndex).
-  EvictionSchedule(const std::vector<CellSpan>& spans, const Eigen::Vector3i& cells);
+  /// (z * cells.y() + y) * cells.x() + x, as VoxelMap::pageIndex). Cells no frame touches for
+  /// more than `aside_gap` frames between two that do are set aside (0: none).
+  EvictionSchedule(const std::vector<CellSpan>& spans, const Eigen::Vector3i& cells,
+                   std::int32_t aside_gap = 0);
 
   std::size_t frames() const { return ready_.size(); }
   const CellSpan& span(std::size_t frame) const { return spans_[frame]; }
@@ -60,6 +66,12 @@ class EvictionSchedule {
     return released_at_[step];
   }
   const std::vector<std::uint32_t>& cellsFreedAt(std::size_t step) const { return freed_at_[step]; }
+  /// Cells no frame touches for more than the gap after `step`, but one does later.
+  const std::vector<std::uint32_t>& cellsAsideAt(std::size_t step) const { return aside_at_[step]; }
+  /// Cells set aside that frame `frame` touches: to be held again before it is carved.
+  const std::vector<std::uint32_t>& cellsBackBefore(std::size_t frame) const {
+    return back_before_[frame];
+  }
   Eigen::Vector3i cellCoords(std::size_t cell) const;
   std::size_t cellIndex(const Eigen::Vector3i& c) const {
     return (static_cast<std::size_t>(c.z()) * cells_.y() + c.y()) * cells_.x() + c.x();
@@ -78,6 +90,7 @@ class EvictionSchedule {
   Eigen::Vector3i cells_;
   std::vector<std::int32_t> first_, last_, settled_, ready_, released_, freed_;
   std::vector<std::vector<std::uint32_t>> settled_at_, ready_at_, released_at_, freed_at_;
+  std::vector<std::vector<std::uint32_t>> aside_at_, back_before_;
 };
 
 }  // namespace sonarcarve

@@ -310,6 +310,22 @@ std::vector<ParamSpec> makeSchema() {
        .gui = {.group = "Carving", .label = "Let finished blocks go", .advanced = true},
        .access = field([](auto& p) -> auto& { return p.evict_blocks; }),
        .applies = usesFastEngine},
+      {.key = "set_aside_after_frames",
+       .unit = "frames",
+       .range = kNonNegative,
+       .help = "with evict_blocks: map pages no frame reaches for more than this many frames "
+               "(a lawnmower's next line) wait in a temporary file, held again as they were "
+               "before a frame comes back (the same outputs, memory flat along the survey); "
+               "0 = kept in memory",
+       .flag = "--set-aside-after",
+       .gui = {.group = "Carving",
+               .label = "Set pages aside after",
+               .advanced = true,
+               .max = 1000000,
+               .suffix = " frames",
+               .min_text = "never"},
+       .access = field([](auto& p) -> auto& { return p.set_aside_after_frames; }),
+       .applies = usesFastEngine},
 
       // Navigation.
       {.key = "pose_refinement.enabled",

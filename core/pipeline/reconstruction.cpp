@@ -147,19 +147,22 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   };
   // A map viewer shows the whole map: it is kept then.
   std::optional<EvictingSurface> evicting;
-  FrameCarved frame_carved;
+  CarveHooks hooks;
   if (evicting_run) {
     CarveParams as_carved = stage.carve;
     as_carved.region = bounds;
-    evicting.emplace(posed, sonar_, as_carved, params_.min_views, pool_);
-    frame_carved = [&](std::size_t position, const Eigen::Isometry3d& T_world_sonar,
+    evicting.emplace(posed, sonar_, as_carved, params_.min_views, pool_,
+                     params_.set_aside_after_frames);
+    hooks.starting = [&](std::size_t position, Carver& carver) {
+      evicting->frameStarting(position, *carver.evictableMap());
+    };
+    hooks.carved = [&](std::size_t position, const Eigen::Isometry3d& T_world_sonar,
                        Carver& carver) {
       evicting->frameCarved(position, T_world_sonar, *carver.evictableMap());
     };
   }
-  CarveStageResult carved =
-      carving.run(posed, bounds, frames, progress, updates ? &*updates : nullptr, skip, check_frame,
-                  frame_carved);
+  CarveStageResult carved = carving.run(posed, bounds, frames, progress,
+                                        updates ? &*updates : nullptr, skip, check_frame, hooks);
   result.cancelled = carved.cancelled;
   result.frames_used = carved.used.size();
   result.refinement = std::move(carved.refinement);
@@ -179,6 +182,8 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     }
     result.evicted = true;
     result.pages_freed_early = evicting->pagesFreedEarly();
+    result.pages_set_aside = evicting->pagesSetAside();
+    result.aside_file_bytes = evicting->asideFileBytes();
     result.surface = evicting->surface();
     result.occupancy = evicting->takeOccupancy();
     result.occupied_voxels = evicting->occupiedVoxels();

@@ -63,6 +63,12 @@ struct ReconstructionParams {
   /// the mission's. The outputs are the same; runs that need the whole map keep it (a map
   /// viewer, --save-map, --load-map, occlusion-aware carving, pose refinement).
   bool evict_blocks = true;
+  /// An evicting run sets its map's pages aside in a temporary file while no frame touches
+  /// them for more than this many frames, and holds them again before one does (a lawnmower's
+  /// next line; docs/scaling.md): 10 s at 10 Hz, long against a page's own frames (a view
+  /// spans 10 m: 200 frames at 5 cm), short against a line. 0: never. The outputs are the
+  /// same either way.
+  std::int32_t set_aside_after_frames = 100;
 
   /// A surface voxel must be the first return in this many views: ghosts of the elevation
   /// ambiguity are first returns in fewer views than a real surface, seen from every view

@@ -124,6 +124,57 @@ TEST(EvictionSchedule, ALongSurveyLetsItsFirstLineGoWhileItFliesTheThird) {
   EXPECT_LT(s.released(first_line_cell), 40);
 }
 
+TEST(EvictionSchedule, ACellIsSetAsideOverEachGapBetweenItsFramesAndBackBeforeTheNext) {
+  // Lines 4 cells apart with a reach of 3: a cell is touched by two lines, with a gap between.
+  const std::int32_t gap = 10;
+  const EvictionSchedule s(lawnmower(5, 40, 4, 3, 2), kGrid, gap);
+  const auto n_cells = static_cast<std::size_t>(kGrid.prod());
+  // The frames touching each cell, by brute force.
+  std::vector<std::vector<std::int32_t>> touches(n_cells);
+  for (std::size_t f = 0; f < s.frames(); ++f) {
+    for (std::size_t c = 0; c < n_cells; ++c) {
+      if (s.span(f).contains(s.cellCoords(c))) {
+        touches[c].push_back(static_cast<std::int32_t>(f));
+      }
+    }
+  }
+  std::vector<std::vector<std::int32_t>> aside(n_cells), back(n_cells);
+  for (std::size_t step = 0; step < s.frames(); ++step) {
+    for (std::uint32_t c : s.cellsAsideAt(step)) {
+      aside[c].push_back(static_cast<std::int32_t>(step));
+    }
+    for (std::uint32_t c : s.cellsBackBefore(step)) {
+      back[c].push_back(static_cast<std::int32_t>(step));
+    }
+  }
+  std::size_t gaps = 0;
+  for (std::size_t c = 0; c < n_cells; ++c) {
+    std::vector<std::int32_t> expected_aside, expected_back;
+    for (std::size_t i = 1; i < touches[c].size(); ++i) {
+      if (touches[c][i] - touches[c][i - 1] > gap) {
+        expected_aside.push_back(touches[c][i - 1]);
+        expected_back.push_back(touches[c][i]);
+      }
+    }
+    EXPECT_EQ(aside[c], expected_aside) << "cell " << c;
+    EXPECT_EQ(back[c], expected_back) << "cell " << c;
+    gaps += expected_aside.size();
+    // Nothing reads a cell while it is aside: it and its neighbours settle, and it is
+    // released, only after its last frame.
+    for (std::int32_t t : expected_back) {
+      EXPECT_GE(s.settled(c), t);
+      EXPECT_GE(s.released(c), t);
+    }
+  }
+  EXPECT_GT(gaps, 100u);  // the survey does come back over cells it left
+  // Without a gap, nothing is set aside.
+  const EvictionSchedule none(lawnmower(5, 40, 4, 3, 2), kGrid);
+  for (std::size_t step = 0; step < none.frames(); ++step) {
+    EXPECT_TRUE(none.cellsAsideAt(step).empty());
+    EXPECT_TRUE(none.cellsBackBefore(step).empty());
+  }
+}
+
 TEST(EvictionSchedule, SpansOutsideTheGridAreClippedAndEmptyFramesAreReadyAtOnce) {
   std::vector<CellSpan> spans{{Eigen::Vector3i(-5, -5, -5), Eigen::Vector3i(1, 1, 1)},
                               CellSpan{},

@@ -1,7 +1,8 @@
 // A run that lets finished blocks go (evict_blocks, pipeline/evicting_surface.h) gives the
 // in-memory run's outputs: the same surface points (position, intensity, views), the same mesh
 // and the same map.bt, on a lawnmower of two lines over the seabed field, where the first
-// line's blocks go while the second is flown, and on the riser.
+// line's blocks go while the second is flown (and where pages the second line comes back to
+// are set aside in a file meanwhile), and on the riser.
 #include <gtest/gtest.h>
 
 #include "carve/occupancy_export.h"
@@ -21,11 +22,12 @@ struct Outputs {
 };
 
 Outputs reconstruct(const std::filesystem::path& mission_folder, bool evict,
-                    const std::filesystem::path& bt) {
+                    const std::filesystem::path& bt, std::int32_t set_aside_after_frames) {
   static ThreadPool pool(2);
   const Mission mission = readMission(mission_folder);
   ReconstructionParams params;
   params.evict_blocks = evict;
+  params.set_aside_after_frames = set_aside_after_frames;
   SilentProgress progress;
   Outputs out{sonarcarve::Pipeline(mission, params, pool).run(progress), {}};
   if (out.result.evicted) {
@@ -39,9 +41,10 @@ Outputs reconstruct(const std::filesystem::path& mission_folder, bool evict,
 
 // The evicting run's result, after comparing it with the in-memory run's.
 ReconstructionResult expectSameOutputs(const std::filesystem::path& mission,
-                                       const test::ScratchDir& dir) {
-  const Outputs kept = reconstruct(mission, false, dir.path() / "kept.bt");
-  Outputs evicted = reconstruct(mission, true, dir.path() / "evicted.bt");
+                                       const test::ScratchDir& dir,
+                                       std::int32_t set_aside_after_frames = 100) {
+  const Outputs kept = reconstruct(mission, false, dir.path() / "kept.bt", 0);
+  Outputs evicted = reconstruct(mission, true, dir.path() / "evicted.bt", set_aside_after_frames);
   EXPECT_FALSE(kept.result.evicted);
   EXPECT_TRUE(evicted.result.evicted);
   EXPECT_GT(kept.result.surface.size(), 10u);
@@ -80,8 +83,13 @@ TEST(Eviction, ALawnmowerGivesTheSameOutputsAndLetsItsFirstLineGo) {
   SilentProgress progress;
   ThreadPool pool;
   runSimulation(request, progress, pool, SeabedFieldSpec{});
-  const ReconstructionResult evicted = expectSameOutputs(dir.path() / "lawn", dir);
+  // Pages the second line comes back to are set aside in a file meanwhile (here after 5
+  // frames away: the first line's start is out of reach for about 20 frames) and held again
+  // as they were. The riser's run below sets nothing aside.
+  const ReconstructionResult evicted = expectSameOutputs(dir.path() / "lawn", dir, 5);
   EXPECT_GT(evicted.pages_freed_early, 0u);
+  EXPECT_GT(evicted.pages_set_aside, 0u);
+  EXPECT_GT(evicted.aside_file_bytes, 0u);
 }
 
 TEST(Eviction, TheRiserGivesTheSameOutputs) {
@@ -93,7 +101,7 @@ TEST(Eviction, TheRiserGivesTheSameOutputs) {
   SilentProgress progress;
   ThreadPool pool;
   runSimulation(request, progress, pool);
-  expectSameOutputs(dir.path() / "riser", dir);
+  EXPECT_EQ(expectSameOutputs(dir.path() / "riser", dir).pages_set_aside, 0u);
 }
 
 }  // namespace

@@ -167,9 +167,11 @@ TEST_F(CarveStageTest, TheBudgetCheckSeesTheMapAfterEachFramesEviction) {
   none.detector = detector_;
   const DenoisedFrames frames(mission, mission.sonar, none);
   const CarveStage stage(mission.sonar, {}, pool_);
-  std::vector<std::size_t> positions;
+  std::vector<std::size_t> positions, started;
   std::size_t held_bytes = 0, left_bytes = 0;
-  const FrameCarved evict = [&](std::size_t position, const Eigen::Isometry3d&, Carver& carver) {
+  CarveHooks hooks;
+  hooks.starting = [&](std::size_t position, Carver&) { started.push_back(position); };
+  hooks.carved = [&](std::size_t position, const Eigen::Isometry3d&, Carver& carver) {
     positions.push_back(position);
     VoxelMap* map = carver.evictableMap();
     if (map == nullptr) {
@@ -188,8 +190,10 @@ TEST_F(CarveStageTest, TheBudgetCheckSeesTheMapAfterEachFramesEviction) {
     EXPECT_EQ(at.map_bytes, static_cast<double>(left_bytes));
     EXPECT_LT(left_bytes, held_bytes);  // each frame's pages were there, and went
   };
-  stage.run(posed, stage.mapBounds(posed), frames, progress, nullptr, skipped.sink(), check, evict);
-  // Frames that failed to load are not reported: their place in the order is skipped.
+  stage.run(posed, stage.mapBounds(posed), frames, progress, nullptr, skipped.sink(), check, hooks);
+  // Every frame is heard of before it is loaded; frames that failed to load are not reported
+  // as carved: their place in the order is skipped.
+  EXPECT_EQ(started, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6, 7}));
   EXPECT_EQ(positions, (std::vector<std::size_t>{0, 1, 2, 4, 6, 7}));
   EXPECT_EQ(checks, 6u);
 }
