@@ -61,7 +61,7 @@ void writeOutputs(const std::filesystem::path& out, const Mission& mission,
   writeSurfacePointsPly(result.surface, out / "surface_points.ply");
   manifest.wrote("surface_points.ply");
   if (result.evicted) {
-    writeOccupancyBt(result.occupancy, params.carve.voxel_size_m, out / "map.bt");
+    writeOccupancyBt(result.occupancy.sorted(), params.carve.voxel_size_m, out / "map.bt");
     manifest.wrote("map.bt");
   } else if (result.map) {
     writeOccupancyBt(*result.map, out / "map.bt");

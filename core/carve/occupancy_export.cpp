@@ -87,7 +87,7 @@ namespace {
 // Writes the subtrees below one node depth first and says what the node is.
 class BtWriter {
  public:
-  explicit BtWriter(const std::vector<OccupancyBlock>& blocks) : blocks_(blocks) {}
+  explicit BtWriter(const SortedOccupancy& blocks) : blocks_(blocks) {}
   std::size_t nodes = 0;  ///< nodes written, the root not included
 
   /// Appends to `out` the node at `level` (0: a voxel) whose key prefix is `prefix`, made of
@@ -95,27 +95,29 @@ class BtWriter {
   NodeState node(int level, std::uint64_t prefix, std::size_t b, std::size_t e, std::string& out) {
     std::array<NodeState, 8> child{};
     std::array<std::string, 8> below;
+    if (level == kBlockLevels) {
+      blocks_.read(b, block_);  // the voxels below come from this block alone
+    }
+    const auto& mortons = blocks_.mortons;
     for (int c = 0; c < 8; ++c) {
       const std::uint64_t child_prefix = prefix << 3 | static_cast<std::uint64_t>(c);
       if (level - 1 >= kBlockLevels) {
         // Blocks whose Morton key starts with the child's prefix.
         const int shift = 3 * (level - 1 - kBlockLevels);
         const auto first =
-            std::lower_bound(blocks_.begin() + static_cast<long>(b),
-                             blocks_.begin() + static_cast<long>(e), child_prefix << shift,
-                             [](const OccupancyBlock& x, std::uint64_t m) { return x.morton < m; });
+            std::lower_bound(mortons.begin() + static_cast<long>(b),
+                             mortons.begin() + static_cast<long>(e), child_prefix << shift);
         auto last = first;
-        while (last != blocks_.begin() + static_cast<long>(e) &&
-               (last->morton >> shift) == child_prefix) {
+        while (last != mortons.begin() + static_cast<long>(e) && (*last >> shift) == child_prefix) {
           ++last;
         }
         if (first != last) {
           child[c] =
-              node(level - 1, child_prefix, static_cast<std::size_t>(first - blocks_.begin()),
-                   static_cast<std::size_t>(last - blocks_.begin()), below[c]);
+              node(level - 1, child_prefix, static_cast<std::size_t>(first - mortons.begin()),
+                   static_cast<std::size_t>(last - mortons.begin()), below[c]);
         }
       } else if (level - 1 == 0) {
-        child[c] = leafOf(blocks_[b], child_prefix & 0x1FF);
+        child[c] = leafOf(block_, child_prefix & 0x1FF);
       } else {
         child[c] = node(level - 1, child_prefix, b, e, below[c]);
       }
@@ -151,7 +153,8 @@ class BtWriter {
   }
 
  private:
-  const std::vector<OccupancyBlock>& blocks_;
+  const SortedOccupancy& blocks_;
+  OccupancyBlock block_;  // the block being written
 };
 
 }  // namespace
@@ -168,10 +171,21 @@ void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
                       const std::filesystem::path& path) {
   std::sort(blocks.begin(), blocks.end(),
             [](const OccupancyBlock& a, const OccupancyBlock& b) { return a.morton < b.morton; });
+  SortedOccupancy sorted;
+  sorted.mortons.reserve(blocks.size());
+  for (const OccupancyBlock& b : blocks) {
+    sorted.mortons.push_back(b.morton);
+  }
+  sorted.read = [&blocks](std::size_t n, OccupancyBlock& out) { out = blocks[n]; };
+  writeOccupancyBt(sorted, voxel_size_m, path);
+}
+
+void writeOccupancyBt(const SortedOccupancy& blocks, double voxel_size_m,
+                      const std::filesystem::path& path) {
   BtWriter writer(blocks);
   std::string data;
-  if (!blocks.empty()) {
-    writer.node(kTreeDepth, 0, 0, blocks.size(), data);
+  if (!blocks.mortons.empty()) {
+    writer.node(kTreeDepth, 0, 0, blocks.mortons.size(), data);
     ++writer.nodes;  // the root
   }
   std::ostringstream header;

@@ -7,12 +7,14 @@
 // would take gigabytes. The file is written without building an octree (the bytes OctoMap's
 // writer would write for the same voxels; memory: the exported blocks, 520 bytes each, and
 // the file). A run that lets finished regions of its map go collects their exported blocks as
-// they go (136 bytes each) and writes the file from them at the end.
+// they go (carve/occupancy_store.h: 16 bytes each in memory, the rest in a temporary file) and
+// writes the file from them at the end.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "carve/voxel_map.h"
@@ -27,6 +29,13 @@ struct OccupancyBlock {
   std::array<std::uint64_t, VoxelMap::kBlockVoxels / 32> leaves{};
 };
 
+/// Exported blocks sorted by Morton key, read one at a time (carve/occupancy_store.h keeps
+/// them in a file): `mortons` ascending, `read(n, out)` fills out.leaves with the n-th's.
+struct SortedOccupancy {
+  std::vector<std::uint64_t> mortons;
+  std::function<void(std::size_t n, OccupancyBlock& out)> read;
+};
+
 /// Adds the exported blocks of one page of `map` (its face neighbours' voxels must be final).
 void collectOccupancyBlocks(const VoxelMap& map, std::size_t page,
                             std::vector<OccupancyBlock>& blocks);
@@ -35,6 +44,8 @@ void collectOccupancyBlocks(const VoxelMap& map, std::size_t page,
 void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path);
 /// The same from collected blocks (any order), of a map of `voxel_size_m`.
 void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
+                      const std::filesystem::path& path);
+void writeOccupancyBt(const SortedOccupancy& blocks, double voxel_size_m,
                       const std::filesystem::path& path);
 
 }  // namespace sonarcarve

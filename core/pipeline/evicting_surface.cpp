@@ -126,6 +126,7 @@ void EvictingSurface::settle(const std::vector<std::uint32_t>& cells, const Voxe
   std::vector<Eigen::Vector3i> voxels;
   std::vector<float> values;
   std::vector<std::uint32_t> seeing;  // frames that touch one of the cells
+  std::vector<OccupancyBlock> blocks;
   for (std::uint32_t c : cells) {
     if (!map.pageHeld(c)) {
       continue;
@@ -134,7 +135,9 @@ void EvictingSurface::settle(const std::vector<std::uint32_t>& cells, const Voxe
       voxels.push_back(v);
       values.push_back(value);
     });
-    collectOccupancyBlocks(map, c, occupancy_);
+    blocks.clear();
+    collectOccupancyBlocks(map, c, blocks);
+    occupancy_.add(blocks);
     for (std::size_t b = std::size_t{c} * VoxelMap::kPageBlocks;
          b < (std::size_t{c} + 1) * VoxelMap::kPageBlocks; ++b) {
       if (const float* v = map.values(b)) {

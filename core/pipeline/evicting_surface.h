@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "carve/carve_params.h"
-#include "carve/occupancy_export.h"
+#include "carve/occupancy_store.h"
 #include "carve/page_spill.h"
 #include "carve/voxel_map.h"
 #include "common/thread_pool.h"
@@ -45,7 +45,7 @@ class EvictingSurface {
 
   /// The surface points, in the order the in-memory path gives them (voxelOrderLess).
   SurfacePoints surface() const;
-  std::vector<OccupancyBlock> takeOccupancy() { return std::move(occupancy_); }
+  OccupancyStore takeOccupancy() { return std::move(occupancy_); }
   std::size_t occupiedVoxels() const { return occupied_voxels_; }
   /// The most the map and the resolver held after a frame.
   std::size_t peakBytes() const { return peak_bytes_; }
@@ -76,7 +76,7 @@ class EvictingSurface {
   OcclusionResolver resolver_;
   std::size_t next_step_ = 0;
   SurfacePoints surface_;
-  std::vector<OccupancyBlock> occupancy_;
+  OccupancyStore occupancy_;
   std::vector<std::uint8_t> leaving_;  // per cell, while its blocks are taken out
   std::size_t occupied_voxels_ = 0;
   std::size_t peak_bytes_ = 0;

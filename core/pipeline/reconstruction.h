@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "carve/carver.h"
-#include "carve/occupancy_export.h"
+#include "carve/occupancy_store.h"
 #include "carve/voxel_map.h"
 #include "common/progress.h"
 #include "io/mission.h"
@@ -32,10 +32,10 @@ struct ReconstructionResult {
   /// blocks go (evicted): then `occupancy` holds what map.bt needs.
   const VoxelMap* map = nullptr;
   bool evicted = false;
-  std::size_t pages_freed_early = 0;      ///< an evicting run's pages let go before its last frame
-  std::size_t pages_set_aside = 0;        ///< ...and set aside while its survey was away
-  std::uint64_t aside_file_bytes = 0;     ///< the most their temporary file held
-  std::vector<OccupancyBlock> occupancy;  ///< an evicting run's .bt export blocks
+  std::size_t pages_freed_early = 0;   ///< an evicting run's pages let go before its last frame
+  std::size_t pages_set_aside = 0;     ///< ...and set aside while its survey was away
+  std::uint64_t aside_file_bytes = 0;  ///< the most their temporary file held
+  OccupancyStore occupancy;            ///< an evicting run's .bt export blocks
   std::size_t frames_used = 0;
   std::string detector;   ///< the detector that ran (`auto` made concrete)
   std::string denoising;  ///< which noise model it used and why, in words

@@ -31,7 +31,7 @@ Outputs reconstruct(const std::filesystem::path& mission_folder, bool evict,
   SilentProgress progress;
   Outputs out{sonarcarve::Pipeline(mission, params, pool).run(progress), {}};
   if (out.result.evicted) {
-    writeOccupancyBt(out.result.occupancy, params.carve.voxel_size_m, bt);
+    writeOccupancyBt(out.result.occupancy.sorted(), params.carve.voxel_size_m, bt);
   } else {
     writeOccupancyBt(*out.result.map, bt);
   }

@@ -5,12 +5,15 @@
 
 #include <octomap/OcTree.h>
 
+#include <algorithm>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <sstream>
 #include <unordered_set>
 
 #include "carve/occupancy_export.h"
+#include "carve/occupancy_store.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {
@@ -90,6 +93,49 @@ TEST(OccupancyExport, WritesTheBytesOctoMapWrites) {
     writeOccupancyBt(map, dir.path() / "map.bt");
     EXPECT_EQ(test::readText(dir.path() / "map.bt"), octomapBytes(map)) << "seed " << seed;
   }
+}
+
+TEST(OccupancyExport, BlocksKeptInATemporaryFileWriteTheSameBytes) {
+  // An evicting run collects a page's blocks at a time, in no order, into an OccupancyStore.
+  test::ScratchDir dir;
+  const auto owned = scatteredMap(5);
+  const VoxelMap& map = *owned;
+  std::vector<std::size_t> pages(map.pageCount());
+  std::iota(pages.begin(), pages.end(), std::size_t{0});
+  std::shuffle(pages.begin(), pages.end(), std::mt19937(11));
+  OccupancyStore store;
+  std::vector<OccupancyBlock> all, page_blocks;
+  for (std::size_t page : pages) {
+    page_blocks.clear();
+    collectOccupancyBlocks(map, page, page_blocks);
+    store.add(page_blocks);
+    all.insert(all.end(), page_blocks.begin(), page_blocks.end());
+  }
+  ASSERT_GT(store.size(), 50u);
+  ASSERT_EQ(store.size(), all.size());
+  // A copy shares the file: blocks it adds go after the others' and leave them as they were.
+  OccupancyStore copy = store;
+  copy.add({all.front()});
+  EXPECT_EQ(copy.size(), store.size() + 1);
+  const SortedOccupancy sorted = store.sorted();
+  EXPECT_TRUE(std::is_sorted(sorted.mortons.begin(), sorted.mortons.end()));
+  std::sort(all.begin(), all.end(),
+            [](const OccupancyBlock& a, const OccupancyBlock& b) { return a.morton < b.morton; });
+  OccupancyBlock read;
+  for (std::size_t n = 0; n < all.size(); ++n) {
+    EXPECT_EQ(sorted.mortons[n], all[n].morton);
+    sorted.read(n, read);
+    EXPECT_EQ(read.leaves, all[n].leaves) << "block " << n;
+  }
+  writeOccupancyBt(sorted, map.voxelSize(), dir.path() / "stored.bt");
+  writeOccupancyBt(map, dir.path() / "map.bt");
+  EXPECT_EQ(test::readText(dir.path() / "stored.bt"), test::readText(dir.path() / "map.bt"));
+  // Nothing stored: the empty tree, and no file made.
+  OccupancyStore none;
+  none.add({});
+  writeOccupancyBt(none.sorted(), map.voxelSize(), dir.path() / "none.bt");
+  writeOccupancyBt(std::vector<OccupancyBlock>{}, map.voxelSize(), dir.path() / "empty.bt");
+  EXPECT_EQ(test::readText(dir.path() / "none.bt"), test::readText(dir.path() / "empty.bt"));
 }
 
 TEST(OccupancyExport, OctoMapReadsTheFileBackWithTheShellOccupied) {

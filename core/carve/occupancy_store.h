@@ -1,0 +1,37 @@
+// OccupancyStore: the map.bt export blocks an evicting run collects as its pages are settled
+// (carve/occupancy_export.h), kept as their Morton keys in memory (16 bytes a block) and their
+// leaves (128 bytes) in an anonymous temporary file (std::tmpfile: removed when closed), so
+// that what a long survey holds for its map.bt grows by a ninth of the blocks' size. Copies
+// share the file.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "carve/occupancy_export.h"
+
+namespace sonarcarve {
+
+class OccupancyStore {
+ public:
+  /// Throws Error if the first block cannot be written (no temporary file, disk full).
+  void add(const std::vector<OccupancyBlock>& blocks);
+  std::size_t size() const { return keys_.size(); }
+  bool empty() const { return keys_.empty(); }
+  /// The blocks in Morton order: their keys, and a reader of the n-th. Throws Error if the
+  /// file cannot be read back.
+  SortedOccupancy sorted() const;
+
+ private:
+  struct Key {
+    std::uint64_t morton = 0;
+    std::uint64_t record = 0;  // place in the file, in blocks
+  };
+  std::vector<Key> keys_;
+  std::shared_ptr<std::FILE> file_;
+};
+
+}  // namespace sonarcarve
