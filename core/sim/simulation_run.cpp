@@ -107,7 +107,7 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   const std::string scene_name = field ? std::string("seabed-field") : request.scene.name;
   const bool keep_visible = request.imaging.visible_cell_m > 0.0;
   VisibleSurface visible(keep_visible ? request.imaging.visible_cell_m : 0.01);
-  const HitSink seen = [&](const Eigen::Vector3f& p) { visible.add(p); };
+  const HitSink seen = [&](std::span<const Eigen::Vector3f> points) { visible.add(points); };
   // A clipped beam images nothing outside the aperture: the mission says so, for carving.
   const SonarModel mission_sonar = request.imaging.beam == SimulatedBeam::Clipped
                                        ? request.sonar.withElevationBeam(ElevationBeam::Clipped)
