@@ -16,7 +16,7 @@
 namespace sonarcarve {
 namespace {
 
-// The rays of one sub-ray of a sonar beam, as the simulator casts them: 904 elevations 0.1 degree
+// The rays of one sub-ray of a sonar beam, spaced as the simulator's: 904 elevations 0.1 degree
 // apart over +-45.2 degrees, at the middle of each step (never at 0).
 std::vector<Eigen::Vector3f> elevationFan(const Eigen::Matrix3f& R, double bearing_rad) {
   std::vector<Eigen::Vector3f> fan;
