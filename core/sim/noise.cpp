@@ -1,9 +1,11 @@
 #include "sim/noise.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <string>
 
 #include "common/error.h"
 #include "io/yaml_fields.h"
@@ -65,20 +67,44 @@ double backgroundMean(const NoiseSpec& spec, const SonarModel& sonar, int row, i
 
 void addNoise(cv::Mat& image, const NoiseSpec& spec, const SonarModel& sonar,
               std::uint64_t frame_index) {
-  if (!spec.enabled) {
+  if (spec.enabled) {
+    FrameNoise(spec, sonar).add(image, frame_index);
+  }
+}
+
+FrameNoise::FrameNoise(const NoiseSpec& spec, const SonarModel& sonar) : spec_(spec) {
+  if (!spec_.enabled) {
     return;
   }
-  std::mt19937_64 rng(spec.seed * 0x9E3779B97F4A7C15ULL + frame_index);
-  std::gamma_distribution<float> speckle(static_cast<float>(spec.speckle_looks),
-                                         static_cast<float>(1.0 / spec.speckle_looks));
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   // Rayleigh with mean m has scale sigma = m / sqrt(pi / 2).
   const double to_sigma = 1.0 / std::sqrt(std::numbers::pi / 2.0);
+  background_sigma_.create(sonar.rows(), sonar.cols(), CV_64F);
+  for (int r = 0; r < sonar.rows(); ++r) {
+    auto* row = background_sigma_.ptr<double>(r);
+    for (int c = 0; c < sonar.cols(); ++c) {
+      row[c] = backgroundMean(spec_, sonar, r, c) * to_sigma;
+    }
+  }
+}
+
+void FrameNoise::add(cv::Mat& image, std::uint64_t frame_index) const {
+  if (!spec_.enabled) {
+    return;
+  }
+  if (image.size() != background_sigma_.size() || image.type() != CV_32F) {
+    throw Error("noise", "frame " + std::to_string(frame_index),
+                "expected a float image of the sonar's " + std::to_string(background_sigma_.rows) +
+                    " range bins x " + std::to_string(background_sigma_.cols) + " beams");
+  }
+  std::mt19937_64 rng(spec_.seed * 0x9E3779B97F4A7C15ULL + frame_index);
+  std::gamma_distribution<float> speckle(static_cast<float>(spec_.speckle_looks),
+                                         static_cast<float>(1.0 / spec_.speckle_looks));
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int r = 0; r < image.rows; ++r) {
     float* row = image.ptr<float>(r);
+    const double* sigma = background_sigma_.ptr<double>(r);
     for (int c = 0; c < image.cols; ++c) {
-      const double sigma = backgroundMean(spec, sonar, r, c) * to_sigma;
-      const double background = sigma * std::sqrt(-2.0 * std::log(1.0 - uniform(rng)));
+      const double background = sigma[c] * std::sqrt(-2.0 * std::log(1.0 - uniform(rng)));
       const double signal = row[c] > 0.0f ? static_cast<double>(row[c] * speckle(rng)) : 0.0;
       row[c] = std::clamp(static_cast<float>(signal + background), 0.0f, 65535.0f);
     }

@@ -39,4 +39,17 @@ double backgroundMean(const NoiseSpec& spec, const SonarModel& sonar, int row, i
 void addNoise(cv::Mat& image, const NoiseSpec& spec, const SonarModel& sonar,
               std::uint64_t frame_index);
 
+/// addNoise() for many frames of one sonar: the background level of every pixel is computed
+/// once, not per frame. The same noise as addNoise().
+class FrameNoise {
+ public:
+  FrameNoise(const NoiseSpec& spec, const SonarModel& sonar);
+  /// Throws Error if the image is not the sonar's size. Thread safe.
+  void add(cv::Mat& image, std::uint64_t frame_index) const;
+
+ private:
+  NoiseSpec spec_;
+  cv::Mat background_sigma_;  // CV_64F, per pixel: the Rayleigh scale of the background
+};
+
 }  // namespace sonarcarve

@@ -4,6 +4,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/serial_worker.h"
 #include "geometry/scene_io.h"
 #include "io/atomic_file.h"
 #include "io/mission_writer.h"
@@ -107,7 +108,7 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   const std::string scene_name = field ? std::string("seabed-field") : request.scene.name;
   const bool keep_visible = request.imaging.visible_cell_m > 0.0;
   VisibleSurface visible(keep_visible ? request.imaging.visible_cell_m : 0.01);
-  const HitSink seen = [&](const Eigen::Vector3f& p) { visible.add(p); };
+  const HitSink seen = [&](std::span<const Eigen::Vector3f> points) { visible.add(points); };
   // A clipped beam images nothing outside the aperture: the mission says so, for carving.
   const SonarModel mission_sonar = request.imaging.beam == SimulatedBeam::Clipped
                                        ? request.sonar.withElevationBeam(ElevationBeam::Clipped)
@@ -117,23 +118,31 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
       scene_name + (request.empty_water ? " (empty water)" : "") + " / " + request.trajectory.kind,
       mission_sonar, trajectory.mounting);
   SimulationResult result;
-  for (std::size_t i = 0; i < frames; ++i) {
-    if (progress.cancelled()) {
-      result.cancelled = true;
-      break;
+  {
+    const FrameNoise noise(request.noise, request.sonar);
+    // Each frame is noised, encoded and written while the next one renders; two wait at most.
+    // (Declared after what its jobs use: on the way out it stops before they go.)
+    SerialWorker frame_writer(2);
+    for (std::size_t i = 0; i < frames; ++i) {
+      if (progress.cancelled()) {
+        result.cancelled = true;
+        break;
+      }
+      Frame frame{trajectory.poses[i].time_s, request.sonar.id(), {}};
+      if (request.empty_water) {
+        frame.image = cv::Mat(request.sonar.rows(), request.sonar.cols(), CV_32F, cv::Scalar(0.0f));
+      } else {
+        frame.image = renderer.render(trajectory.T_world_sonar(i), keep_visible ? seen : HitSink{});
+      }
+      frame_writer.submit([&noise, &writer, i, frame = std::move(frame)]() mutable {
+        noise.add(frame.image, i);
+        cv::min(frame.image, 65535.0f, frame.image);
+        writer.addFrame(frame);
+      });
+      ++result.frames_written;
+      progress.report("simulate", i + 1, frames);
     }
-    const NavSample& pose = trajectory.poses[i];
-    Frame frame{pose.time_s, request.sonar.id(), {}};
-    if (request.empty_water) {
-      frame.image = cv::Mat(request.sonar.rows(), request.sonar.cols(), CV_32F, cv::Scalar(0.0f));
-    } else {
-      frame.image = renderer.render(trajectory.T_world_sonar(i), keep_visible ? seen : HitSink{});
-    }
-    addNoise(frame.image, request.noise, request.sonar, i);
-    cv::min(frame.image, 65535.0f, frame.image);
-    writer.addFrame(frame);
-    ++result.frames_written;
-    progress.report("simulate", i + 1, frames);
+    frame_writer.finish();
   }
   const std::size_t written = result.frames_written;
   if (written == 0) {

@@ -50,8 +50,9 @@ struct SimulationResult {
 /// The seed paper's sonar: 2 cm range bins to 10 m, 130 degrees in 650 beams, 20 degrees.
 SonarModel paperSonar(const std::string& id = "sim-sonar");
 
-/// Renders each frame in parallel on `pool`. With `field`, surveys that seabed field instead
-/// of the request's scene (whose name and target are then unused).
+/// Renders each frame in parallel on `pool`, and noises, encodes and writes it on a thread of
+/// its own while the next one renders. With `field`, surveys that seabed field instead of the
+/// request's scene (whose name and target are then unused).
 SimulationResult runSimulation(const SimulationRequest& request, Progress& progress,
                                ThreadPool& pool,
                                const std::optional<SeabedFieldSpec>& field = std::nullopt);

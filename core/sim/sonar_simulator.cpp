@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 
 #include "common/error.h"
 #include "sonar/beam_pattern.h"
@@ -19,8 +18,7 @@ struct Sample {
 };
 
 // Adds `energy` spread uniformly over the ranges [r0, r1] into the column's range bins.
-void spreadOverRange(float r0, float r1, float energy, const RangeBins& bins, float* column,
-                     int stride) {
+void spreadOverRange(float r0, float r1, float energy, const RangeBins& bins, float* column) {
   if (r1 < r0) {
     std::swap(r0, r1);
   }
@@ -30,17 +28,20 @@ void spreadOverRange(float r0, float r1, float energy, const RangeBins& bins, fl
   const double res = bins.resolution_m;
   if (span < 1e-6 * res) {
     if (const auto bin = bins.binOf(0.5 * (first + last))) {
-      column[*bin * stride] += energy;
+      column[*bin] += energy;
     }
     return;
   }
+  // One division per spread, not one per bin: the same floats but for a last-bit tie in one
+  // value of billions (double rounding before the cast to float).
+  const double per_metre = energy / span;
   const int b0 = std::max(0, static_cast<int>(std::floor((first - bins.min_m) / res)));
   const int b1 = std::min(bins.count - 1, static_cast<int>(std::floor((last - bins.min_m) / res)));
   for (int b = b0; b <= b1; ++b) {
     const double lo = std::max(first, bins.min_m + b * res);
     const double hi = std::min(last, bins.min_m + (b + 1) * res);
     if (hi > lo) {
-      column[b * stride] += static_cast<float>(energy * (hi - lo) / span);
+      column[b] += static_cast<float>(per_metre * (hi - lo));
     }
   }
 }
@@ -184,24 +185,24 @@ void SonarSimulator::addBearingLeakage(const SonarModel& sonar) {
 }
 
 cv::Mat SonarSimulator::leak(const cv::Mat& ray_columns) const {
-  cv::Mat image(sonar_.rows(), sonar_.cols(), CV_32F, cv::Scalar(0.0f));
-  pool_.parallelFor(static_cast<std::size_t>(image.rows), 16,
+  // Beam by beam, its taps' columns weighted and summed in tap order, range bins side by side.
+  cv::Mat beam_columns(sonar_.cols(), sonar_.rows(), CV_32F, cv::Scalar(0.0f));
+  const int bins = beam_columns.cols;
+  pool_.parallelFor(static_cast<std::size_t>(beam_columns.rows), 16,
                     [&](std::size_t begin, std::size_t end) {
-                      for (std::size_t r = begin; r < end; ++r) {
-                        const float* in = ray_columns.ptr<float>(static_cast<int>(r));
-                        float* out = image.ptr<float>(static_cast<int>(r));
-                        for (int j = 0; j < image.cols; ++j) {
-                          const float* x = in + tap_first_[static_cast<std::size_t>(j)];
-                          float sum = 0.0f;
-                          for (int t = tap_offset_[static_cast<std::size_t>(j)];
-                               t < tap_offset_[static_cast<std::size_t>(j) + 1]; ++t, ++x) {
-                            sum += tap_weight_[static_cast<std::size_t>(t)] * *x;
+                      for (std::size_t j = begin; j < end; ++j) {
+                        float* out = beam_columns.ptr<float>(static_cast<int>(j));
+                        int column = tap_first_[j];
+                        for (int t = tap_offset_[j]; t < tap_offset_[j + 1]; ++t, ++column) {
+                          const float weight = tap_weight_[static_cast<std::size_t>(t)];
+                          const float* in = ray_columns.ptr<float>(column);
+                          for (int b = 0; b < bins; ++b) {
+                            out[b] += weight * in[b];
                           }
-                          out[j] = sum;
                         }
                       }
                     });
-  return image;
+  return beam_columns;
 }
 
 cv::Mat SonarSimulator::render(const Eigen::Isometry3d& T_world_sonar, const HitSink& hits) const {
@@ -209,34 +210,39 @@ cv::Mat SonarSimulator::render(const Eigen::Isometry3d& T_world_sonar, const Hit
   const bool realistic = settings_.beam == SimulatedBeam::Realistic;
   const int rays = settings_.rays_per_beam;
   const int traced_beams = cols + 2 * pad_beams_;
+  // The image held transposed, a row per column, so that a fan adds into contiguous range bins.
   // Clipped: every ray adds into its own beam's column. Realistic: into its own sub-ray
   // column, which leak() then shares among the beams.
-  cv::Mat target(sonar_.rows(), realistic ? traced_beams * rays : cols, CV_32F, cv::Scalar(0.0f));
-  const int stride = target.cols;
+  cv::Mat columns(realistic ? traced_beams * rays : cols, sonar_.rows(), CV_32F, cv::Scalar(0.0f));
   const Eigen::Matrix3f R = T_world_sonar.linear().cast<float>();
   const Eigen::Vector3f origin = T_world_sonar.translation().cast<float>();
   const float max_range = static_cast<float>(sonar_.range().maxRange());
   const int K = elevations_;
-  std::mutex hits_mutex;
 
   pool_.parallelFor(
       static_cast<std::size_t>(traced_beams), 8, [&](std::size_t begin, std::size_t end) {
         std::vector<Sample> fan(static_cast<std::size_t>(K));
+        std::vector<Eigen::Vector3f> fan_directions(static_cast<std::size_t>(K));
+        std::vector<RayHit> fan_hits(static_cast<std::size_t>(K));
         std::vector<Eigen::Vector3f> seen;
         for (std::size_t j = begin; j < end; ++j) {
           const auto beam = static_cast<int>(j) - pad_beams_;
           const bool in_fan = beam >= 0 && beam < cols;
           for (int s = 0; s < rays; ++s) {
-            float* column =
-                target.ptr<float>(0) + (realistic ? static_cast<int>(j) * rays + s : beam);
+            float* column = columns.ptr<float>(realistic ? static_cast<int>(j) * rays + s : beam);
             const Eigen::Vector3f* dirs =
                 &directions_[(j * static_cast<std::size_t>(rays) + static_cast<std::size_t>(s)) *
                              static_cast<std::size_t>(K)];
+            // One sub-ray's elevations, neighbours in direction: traced as packets.
+            for (int k = 0; k < K; ++k) {
+              fan_directions[static_cast<std::size_t>(k)] = R * dirs[k];
+            }
+            caster_.intersectFan(origin, fan_directions, max_range, fan_hits);
             for (int k = 0; k < K; ++k) {
               Sample& sample = fan[static_cast<std::size_t>(k)];
-              const Eigen::Vector3f dir = R * dirs[k];
-              RayHit hit;
-              sample.hit = caster_.intersect(origin, dir, max_range, hit);
+              const Eigen::Vector3f& dir = fan_directions[static_cast<std::size_t>(k)];
+              const RayHit& hit = fan_hits[static_cast<std::size_t>(k)];
+              sample.hit = hit.found;
               if (!sample.hit) {
                 continue;
               }
@@ -272,27 +278,26 @@ cv::Mat SonarSimulator::render(const Eigen::Isometry3d& T_world_sonar, const Hit
               const Sample& a = fan[static_cast<std::size_t>(k)];
               const bool linked_above = k + 1 < K && linked(k);
               if (a.hit && !linked_below) {
-                spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column, stride);
+                spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column);
               }
               if (linked_above) {
                 const Sample& b = fan[static_cast<std::size_t>(k) + 1];
                 spreadOverRange(a.range, b.range, 0.5f * (a.energy + b.energy), sonar_.range(),
-                                column, stride);
+                                column);
               } else if (a.hit) {
-                spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column, stride);
+                spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column);
               }
               linked_below = linked_above;
             }
           }
         }
         if (hits && !seen.empty()) {
-          std::lock_guard lock(hits_mutex);
-          for (const auto& p : seen) {
-            hits(p);
-          }
+          hits(seen);
         }
       });
-  return realistic ? leak(target) : target;
+  cv::Mat image;
+  cv::transpose(realistic ? leak(columns) : columns, image);
+  return image;
 }
 
 }  // namespace sonarcarve

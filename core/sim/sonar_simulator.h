@@ -25,6 +25,7 @@
 #include <Eigen/Geometry>
 #include <functional>
 #include <opencv2/core.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -70,10 +71,11 @@ struct ImagingSettings {
   double visible_cell_m = 0.01;
 };
 
-/// Called with each surface point a ray hit inside the sonar's window (world frame), when the
+/// Called with the surface points rays hit inside the sonar's window (world frame), when the
 /// hit is not grazing (ImagingSettings::visible_min_cos_incidence) and lies inside the
-/// visible part of the beam (ImagingSettings::visible_beam_level_db).
-using HitSink = std::function<void(const Eigen::Vector3f& p_world)>;
+/// visible part of the beam (ImagingSettings::visible_beam_level_db): a batch of neighbouring
+/// rays' hits at a time, from several threads at once (it must be thread safe).
+using HitSink = std::function<void(std::span<const Eigen::Vector3f> p_world)>;
 
 class SonarSimulator {
  public:
@@ -82,7 +84,7 @@ class SonarSimulator {
                  ThreadPool& pool);
 
   /// Noise-free CV_32F image seen from `T_world_sonar`. If `hits` is set it receives every
-  /// surface point seen (called from several threads, one at a time under a lock).
+  /// surface point seen (HitSink).
   cv::Mat render(const Eigen::Isometry3d& T_world_sonar, const HitSink& hits = {}) const;
 
   const ImagingSettings& settings() const { return settings_; }
@@ -93,6 +95,8 @@ class SonarSimulator {
  private:
   void traceBearings(const SonarModel& sonar);
   void addBearingLeakage(const SonarModel& sonar);
+  /// Realistic beam: each beam's column from its taps' sub-ray columns (both held transposed,
+  /// a row of range bins per column).
   cv::Mat leak(const cv::Mat& ray_columns) const;
 
   const RayCaster& caster_;

@@ -3,6 +3,7 @@
 // range a pixel of row i stands for. Row 0 is the nearest bin.
 #pragma once
 
+#include <cmath>
 #include <optional>
 
 namespace sonarcarve {
@@ -16,8 +17,15 @@ struct RangeBins {
   double maxRange() const { return min_m + resolution_m * count; }
   /// Centre of bin `i`, metres.
   double centre(int i) const { return min_m + (i + 0.5) * resolution_m; }
-  /// The bin that contains `range_m`, or nothing outside [min_m, maxRange()).
-  std::optional<int> binOf(double range_m) const;
+  /// The bin that contains `range_m`, or nothing outside [min_m, maxRange()). Inline: the
+  /// simulator asks it for every ray.
+  std::optional<int> binOf(double range_m) const {
+    const double index = std::floor((range_m - min_m) / resolution_m);
+    if (!(index >= 0.0) || index >= count) {
+      return std::nullopt;
+    }
+    return static_cast<int>(index);
+  }
 };
 
 }  // namespace sonarcarve

@@ -78,6 +78,13 @@ TEST(SimNoise, SameSeedAndFrameGiveTheSameNoise) {
   EXPECT_GT(cv::norm(noisy(7, 2), noisy(7, 3), cv::NORM_INF), 0.0);
 }
 
+TEST(SimNoise, FrameNoiseRefusesAnImageOfAnotherSonar) {
+  const SonarModel sonar = test::paperSonar();
+  const FrameNoise noise(NoiseSpec{}, sonar);
+  cv::Mat image(sonar.rows(), sonar.cols() - 1, CV_32F, cv::Scalar(0.0f));
+  EXPECT_THROW(noise.add(image, 0), Error);
+}
+
 TEST(SimNoise, NoiseSettingsRoundTripThroughYaml) {
   test::ScratchDir dir;
   NoiseSpec spec;
