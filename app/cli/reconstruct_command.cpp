@@ -127,6 +127,10 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   if (result.keep_level.frames > 0) {
     std::cerr << describeKeepLevel(result.keep_level, params.carve.dynamic_range_db) << "\n";
   }
+  if (!result.temporary_file_problem.empty()) {
+    std::cerr << "warning: " << result.temporary_file_problem
+              << "; what the run sets aside in temporary files was kept in memory instead\n";
+  }
   for (const FrameProblem& p : result.skipped) {
     std::cerr << "skipped: " << p.message << "\n";
   }

@@ -19,6 +19,21 @@ void OccupancyStore::add(const std::vector<OccupancyBlock>& blocks) {
   if (blocks.empty()) {
     return;
   }
+  if (problem_.empty()) {
+    try {
+      writeToFile(blocks);
+      return;
+    } catch (const Error& e) {
+      problem_ = e.what();
+    }
+  }
+  for (const OccupancyBlock& b : blocks) {
+    keys_.push_back({b.morton, kInMemory | kept_.size()});
+    kept_.push_back(b);
+  }
+}
+
+void OccupancyStore::writeToFile(const std::vector<OccupancyBlock>& blocks) {
   if (!file_) {
     std::FILE* f = std::tmpfile();
     if (f == nullptr) {
@@ -30,13 +45,16 @@ void OccupancyStore::add(const std::vector<OccupancyBlock>& blocks) {
     throw Error(kSource, "", std::string("could not seek to its end: ") + std::strerror(errno));
   }
   // The file's end, not this store's count: a copy may have added blocks to the same file.
-  auto record = static_cast<std::uint64_t>(ftello(file_.get())) / kRecordBytes;
-  for (const OccupancyBlock& b : blocks) {
-    if (std::fwrite(b.leaves.data(), 1, kRecordBytes, file_.get()) != kRecordBytes) {
-      throw Error(kSource, "block " + std::to_string(record),
+  const auto first = static_cast<std::uint64_t>(ftello(file_.get())) / kRecordBytes;
+  for (std::size_t n = 0; n < blocks.size(); ++n) {
+    if (std::fwrite(blocks[n].leaves.data(), 1, kRecordBytes, file_.get()) != kRecordBytes ||
+        (n + 1 == blocks.size() && std::fflush(file_.get()) != 0)) {
+      throw Error(kSource, "block " + std::to_string(first + n),
                   std::string("could not be written (disk full?): ") + std::strerror(errno));
     }
-    keys_.push_back({b.morton, record++});
+  }
+  for (std::size_t n = 0; n < blocks.size(); ++n) {
+    keys_.push_back({blocks[n].morton, first + n});
   }
 }
 
@@ -57,7 +75,13 @@ SortedOccupancy OccupancyStore::sorted() const {
     throw Error(kSource, "",
                 std::string("could not be written (disk full?): ") + std::strerror(errno));
   }
-  out.read = [file = file_, records = std::move(records)](std::size_t n, OccupancyBlock& block) {
+  auto kept = std::make_shared<const std::vector<OccupancyBlock>>(kept_);
+  out.read = [file = file_, kept, records = std::move(records)](std::size_t n,
+                                                                OccupancyBlock& block) {
+    if ((records[n] & kInMemory) != 0) {
+      block.leaves = (*kept)[records[n] & ~kInMemory].leaves;
+      return;
+    }
     const std::uint64_t offset = records[n] * kRecordBytes;
     if (fseeko(file.get(), static_cast<off_t>(offset), SEEK_SET) != 0 ||
         std::fread(block.leaves.data(), 1, kRecordBytes, file.get()) != kRecordBytes) {

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "carve/carving_geometry.h"
+#include "common/error.h"
 
 namespace sonarcarve {
 namespace {
@@ -110,14 +111,21 @@ void EvictingSurface::runStep(std::size_t step, VoxelMap& map) {
   }
   takeSurface(schedule_->cellsFreedAt(step), map);
   for (std::uint32_t c : schedule_->cellsAsideAt(step)) {
-    if (!map.pageHeld(c)) {
+    if (!map.pageHeld(c) || !file_problem_.empty()) {
       continue;
     }
-    if (!spill_) {
-      spill_ = std::make_unique<PageSpill>();
+    // A file that cannot take a page (no temporary directory, a full disk) leaves it and the
+    // pages after it in memory, as without setting aside: the run goes on, and says so.
+    try {
+      if (!spill_) {
+        spill_ = std::make_unique<PageSpill>();
+      }
+      spill_->setAside(map, c);
+    } catch (const Error& e) {
+      file_problem_ = e.what();
     }
-    spill_->setAside(map, c);
-    aside_file_bytes_ = std::max<std::uint64_t>(aside_file_bytes_, spill_->fileBytes());
+    aside_file_bytes_ =
+        std::max<std::uint64_t>(aside_file_bytes_, spill_ ? spill_->fileBytes() : 0);
   }
   occlusion_ms_ += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "carve/carve_params.h"
@@ -56,6 +57,11 @@ class EvictingSurface {
   /// Pages set aside over the run, and the most bytes their file held.
   std::size_t pagesSetAside() const { return spill_ ? spill_->pagesSetAside() : 0; }
   std::uint64_t asideFileBytes() const { return aside_file_bytes_; }
+  /// Why the temporary files could not be used (pages, or map.bt's blocks, then kept in
+  /// memory); empty when they could.
+  std::string temporaryFileProblem() const {
+    return file_problem_.empty() ? occupancy_.problem() : file_problem_;
+  }
 
  private:
   void plan(const VoxelMap& map);
@@ -73,6 +79,7 @@ class EvictingSurface {
   std::unique_ptr<EvictionSchedule> schedule_;
   std::unique_ptr<PageSpill> spill_;  // made when a page is first set aside
   std::uint64_t aside_file_bytes_ = 0;
+  std::string file_problem_;
   OcclusionResolver resolver_;
   std::size_t next_step_ = 0;
   SurfacePoints surface_;

@@ -184,6 +184,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     result.pages_freed_early = evicting->pagesFreedEarly();
     result.pages_set_aside = evicting->pagesSetAside();
     result.aside_file_bytes = evicting->asideFileBytes();
+    result.temporary_file_problem = evicting->temporaryFileProblem();
     result.surface = evicting->surface();
     result.occupancy = evicting->takeOccupancy();
     result.occupied_voxels = evicting->occupiedVoxels();

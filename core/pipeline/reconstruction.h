@@ -35,7 +35,10 @@ struct ReconstructionResult {
   std::size_t pages_freed_early = 0;   ///< an evicting run's pages let go before its last frame
   std::size_t pages_set_aside = 0;     ///< ...and set aside while its survey was away
   std::uint64_t aside_file_bytes = 0;  ///< the most their temporary file held
-  OccupancyStore occupancy;            ///< an evicting run's .bt export blocks
+  /// Why an evicting run kept in memory what it sets aside in temporary files (empty: it
+  /// did not have to).
+  std::string temporary_file_problem;
+  OccupancyStore occupancy;  ///< an evicting run's .bt export blocks
   std::size_t frames_used = 0;
   std::string detector;   ///< the detector that ran (`auto` made concrete)
   std::string denoising;  ///< which noise model it used and why, in words

@@ -29,6 +29,12 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                            {"carve_ms_per_frame_median", result.carve_ms_median},
                            {"occlusion_ms_per_frame", result.occlusion_ms_per_frame},
                            {"total_s", result.total_s}};
+  if (result.evicted) {
+    report["eviction"] = {{"pages_freed_early", result.pages_freed_early},
+                          {"pages_set_aside", result.pages_set_aside},
+                          {"set_aside_file_bytes_most", result.aside_file_bytes},
+                          {"temporary_file_problem", result.temporary_file_problem}};
+  }
   if (params.carve.beam_aware && result.keep_level.frames > 0) {
     report["beam_aware_carving"] = {{"bright_returns", result.keep_level.bright_returns},
                                     {"dynamic_range_db", params.carve.dynamic_range_db},
