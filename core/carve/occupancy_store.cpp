@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "io/temporary_file.h"
 
 namespace sonarcarve {
 namespace {
@@ -35,11 +36,7 @@ void OccupancyStore::add(const std::vector<OccupancyBlock>& blocks) {
 
 void OccupancyStore::writeToFile(const std::vector<OccupancyBlock>& blocks) {
   if (!file_) {
-    std::FILE* f = std::tmpfile();
-    if (f == nullptr) {
-      throw Error(kSource, "", std::string("could not be made: ") + std::strerror(errno));
-    }
-    file_.reset(f, [](std::FILE* x) { std::fclose(x); });
+    file_.reset(openTemporaryFile(kSource), [](std::FILE* x) { std::fclose(x); });
   }
   if (fseeko(file_.get(), 0, SEEK_END) != 0) {
     throw Error(kSource, "", std::string("could not seek to its end: ") + std::strerror(errno));
@@ -70,10 +67,6 @@ SortedOccupancy OccupancyStore::sorted() const {
   for (const Key& k : keys) {
     out.mortons.push_back(k.morton);
     records.push_back(k.record);
-  }
-  if (file_ && std::fflush(file_.get()) != 0) {
-    throw Error(kSource, "",
-                std::string("could not be written (disk full?): ") + std::strerror(errno));
   }
   auto kept = std::make_shared<const std::vector<OccupancyBlock>>(kept_);
   out.read = [file = file_, kept, records = std::move(records)](std::size_t n,

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "io/temporary_file.h"
 
 namespace sonarcarve {
 namespace {
@@ -25,11 +26,7 @@ void seekTo(std::FILE* file, std::uint64_t offset, std::size_t page) {
 
 }  // namespace
 
-PageSpill::PageSpill() : file_(std::tmpfile()) {
-  if (!file_) {
-    throw Error(kSource, "", std::string("could not be made: ") + std::strerror(errno));
-  }
-}
+PageSpill::PageSpill() : file_(openTemporaryFile(kSource)) {}
 
 PageSpill::Extent PageSpill::place(std::uint64_t size) {
   const auto fit = room_of_.lower_bound(size);

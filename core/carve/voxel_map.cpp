@@ -205,9 +205,7 @@ void VoxelMap::unpackPage(std::size_t page, const std::vector<std::uint8_t>& byt
           take(slotCounts(p.slot[in]), kCountBytes);
         }
       } else if (p.state[in] == BlockState::Partial) {
-        p.slot[in] = takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
-          mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
-        });
+        p.slot[in] = takeMaskSlot();
         take(slotMask(p.slot[in]), kMaskWords);
       } else if (p.state[in] != BlockState::Unknown && p.state[in] != BlockState::Free) {
         p.state[in] = BlockState::Unknown;
@@ -332,9 +330,7 @@ float VoxelMap::value(const Eigen::Vector3i& voxel) const {
 void VoxelMap::storeMask(std::size_t block, const std::array<std::uint64_t, kMaskWords>& mask) {
   if (state(block) != BlockState::Partial) {
     releaseSlot(block);
-    slotOf(block) = takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
-      mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
-    });
+    slotOf(block) = takeMaskSlot();
     stateOf(block) = BlockState::Partial;
   }
   std::copy(mask.begin(), mask.end(), slotMask(slotOf(block)));
@@ -371,6 +367,12 @@ std::int32_t VoxelMap::takeValueSlot(std::size_t block) {
   }
   slot_block_[static_cast<std::size_t>(slot)] = static_cast<std::int32_t>(block);
   return slot;
+}
+
+std::int32_t VoxelMap::takeMaskSlot() {
+  return takeSlot(free_mask_slots_, mask_slots_used_, kChunkBlocks, [&] {
+    mask_chunks_.push_back(std::make_unique<std::uint64_t[]>(kChunkBlocks * kMaskWords));
+  });
 }
 
 void VoxelMap::releaseSlot(std::size_t block) {

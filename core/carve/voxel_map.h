@@ -227,6 +227,8 @@ class VoxelMap {
   std::vector<std::int32_t> free_mask_slots_;
   /// A value slot (and counts) for `block`, which becomes its owner (under storage_mutex_).
   std::int32_t takeValueSlot(std::size_t block);
+  /// A mask slot (under storage_mutex_).
+  std::int32_t takeMaskSlot();
   /// Gives back the block's slot, if it holds one (under storage_mutex_).
   void releaseSlot(std::size_t block);
   /// Keeps `mask` (bit i: voxel i carved) as the block's contents (under storage_mutex_).
