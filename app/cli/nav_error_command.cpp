@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/nav_error_flags.h"
+#include "common/error.h"
 #include "io/atomic_file.h"
 #include "io/mission.h"
 #include "io/nav_csv.h"
@@ -38,6 +39,20 @@ void addNavErrorFlags(CLI::App& cmd, NavErrorSpec& spec) {
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
   }
+  cmd.add_option_function<std::string>(
+         "--nav-error-axes", [&spec](const std::string& names) { spec.axes = navAxesFromNames(names); },
+         "The axes the errors reach, the others kept true: all, or a list of north, east, down, "
+         "roll, pitch, yaw (e.g. down,roll,pitch). The draws are those of all axes, so one seed "
+         "tells which axes of a drift spoil a map")
+      ->check([](const std::string& names) {
+        try {
+          navAxesFromNames(names);
+          return std::string();
+        } catch (const Error& e) {
+          return std::string(e.what());
+        }
+      })
+      ->default_str("all");
 }
 
 void addNavErrorCommand(CLI::App& app, int& exit_code) {

@@ -65,6 +65,7 @@ std::string settingsYaml(const SimulationRequest& r, const std::optional<SeabedF
       << "  attitude_bias_deg: " << shortestNumber(r.nav_error.attitude_bias_deg) << "\n"
       << "  position_noise_m: " << shortestNumber(r.nav_error.position_noise_m) << "\n"
       << "  attitude_noise_deg: " << shortestNumber(r.nav_error.attitude_noise_deg) << "\n"
+      << "  axes: " << navAxesNames(r.nav_error.axes) << "\n"
       << "  seed: " << r.nav_error.seed << "\n"
       << "noise:\n";
   std::istringstream noise(r.noise.toYaml());

@@ -1,5 +1,7 @@
 #include "sim/trajectory.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -137,6 +139,45 @@ Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& ta
               "unknown trajectory: expected vertical, orbit, lawnmower or a .csv of poses");
 }
 
+namespace {
+constexpr std::array<const char*, 6> kNavAxisNames = {"north", "east", "down", "roll", "pitch",
+                                                      "yaw"};
+}  // namespace
+
+unsigned navAxesFromNames(const std::string& names) {
+  if (names == "all") {
+    return kAllNavAxes;
+  }
+  unsigned axes = 0;
+  std::size_t begin = 0;
+  while (begin <= names.size()) {
+    const std::size_t end = std::min(names.find(',', begin), names.size());
+    const std::string word = names.substr(begin, end - begin);
+    const auto* it = std::find(kNavAxisNames.begin(), kNavAxisNames.end(), word);
+    if (it == kNavAxisNames.end()) {
+      throw Error("navigation error", "axes",
+                  "expected all, or a comma-separated list of north, east, down, roll, pitch "
+                  "and yaw, found '" + word + "'");
+    }
+    axes |= 1u << static_cast<unsigned>(it - kNavAxisNames.begin());
+    begin = end + 1;
+  }
+  return axes;
+}
+
+std::string navAxesNames(unsigned axes) {
+  if ((axes & kAllNavAxes) == kAllNavAxes) {
+    return "all";
+  }
+  std::string names;
+  for (std::size_t a = 0; a < kNavAxisNames.size(); ++a) {
+    if ((axes & (1u << a)) != 0) {
+      names += (names.empty() ? "" : ",") + std::string(kNavAxisNames[a]);
+    }
+  }
+  return names;
+}
+
 bool NavErrorSpec::any() const {
   return position_sigma_m != 0.0 || attitude_sigma_deg != 0.0 || position_bias_m != 0.0 ||
          attitude_bias_deg != 0.0 || position_noise_m != 0.0 || attitude_noise_deg != 0.0;
@@ -161,10 +202,18 @@ std::vector<NavSample> withNavigationError(const std::vector<NavSample>& truth,
   for (const NavSample& t : truth) {
     position_walk += draw(walk_rng, spec.position_sigma_m);
     attitude_walk += draw(walk_rng, degToRad(spec.attitude_sigma_deg));
-    const Eigen::Vector3d position_error =
+    Eigen::Vector3d position_error =
         position_walk + position_bias + draw(noise_rng, spec.position_noise_m);
-    const Eigen::Vector3d attitude_error =
+    Eigen::Vector3d attitude_error =
         attitude_walk + attitude_bias + draw(noise_rng, degToRad(spec.attitude_noise_deg));
+    for (int a = 0; a < 3; ++a) {
+      if ((spec.axes & (1u << a)) == 0) {
+        position_error[a] = 0.0;
+      }
+      if ((spec.axes & (1u << (a + 3))) == 0) {
+        attitude_error[a] = 0.0;
+      }
+    }
     NavSample r = t;
     r.position_m += position_error;
     r.q_world_vehicle =

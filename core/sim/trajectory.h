@@ -63,6 +63,24 @@ Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& ta
 
 /// Navigation error, in the manner of a DVL-aided INS or USBL fix: three seeded kinds, each on
 /// the position (every axis, metres) and on the attitude (roll, pitch and yaw, degrees).
+/// The axes of a navigation error, as bits of NavErrorSpec::axes: position north, east, down
+/// (world) and attitude roll, pitch, yaw (the vehicle's).
+enum NavAxis : unsigned {
+  kNavNorth = 1u << 0,
+  kNavEast = 1u << 1,
+  kNavDown = 1u << 2,
+  kNavRoll = 1u << 3,
+  kNavPitch = 1u << 4,
+  kNavYaw = 1u << 5,
+  kAllNavAxes = (1u << 6) - 1u,
+};
+
+/// "north,east,yaw" as bits (kAllNavAxes for "all"). Throws Error naming the word that is not
+/// an axis, or on an empty list.
+unsigned navAxesFromNames(const std::string& names);
+/// The bits as the names navAxesFromNames reads ("all" for kAllNavAxes).
+std::string navAxesNames(unsigned axes);
+
 struct NavErrorSpec {
   double position_sigma_m = 0.0;    ///< random walk: step per navigation sample
   double attitude_sigma_deg = 0.0;  ///< random walk: step per navigation sample
@@ -71,6 +89,10 @@ struct NavErrorSpec {
   double attitude_bias_deg = 0.0;   ///< constant bias: one offset per angle, drawn once
   double position_noise_m = 0.0;    ///< white noise: independent per sample
   double attitude_noise_deg = 0.0;  ///< white noise: independent per sample
+  /// The axes the errors reach (NavAxis bits); the others keep the true values. The draws are
+  /// those of every axis, so an axis kept has the very error it has with all axes: which of a
+  /// drift's axes spoil a map can be told apart with one seed.
+  unsigned axes = kAllNavAxes;
 
   bool any() const;
 };

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/angles.h"
@@ -127,6 +128,53 @@ TEST(Trajectory, NavigationBiasIsConstantAndWhiteNoiseIsIndependent) {
   EXPECT_NEAR(std::sqrt(diff2 / (n - 3.0)), std::sqrt(2.0) * 0.01,
               std::sqrt(2.0) * 0.01 * 4.0 * std::sqrt(1.0 / n));
 }
+
+TEST(Trajectory, NavigationErrorReachesOnlyTheChosenAxesWithTheDrawsOfAll) {
+  const Trajectory t = makeTrajectory(TrajectorySpec{}, riserLike());
+  NavErrorSpec all{0.01, 0.1, 7};
+  all.position_bias_m = 0.05;
+  all.attitude_noise_deg = 0.05;
+  NavErrorSpec some = all;
+  some.axes = navAxesFromNames("east,down,pitch");
+  const auto a = withNavigationError(t.poses, all);
+  const auto s = withNavigationError(t.poses, some);
+  ASSERT_EQ(a.size(), s.size());
+  double kept_east = 0.0, kept_pitch = 0.0;
+  for (std::size_t i = 0; i < t.poses.size(); ++i) {
+    const Eigen::Vector3d ea = a[i].position_m - t.poses[i].position_m;
+    const Eigen::Vector3d es = s[i].position_m - t.poses[i].position_m;
+    // North stays true; east and down carry exactly the error they carry with every axis.
+    EXPECT_NEAR(es.x(), 0.0, 1e-12) << i;
+    EXPECT_NEAR(es.y(), ea.y(), 1e-12) << i;
+    EXPECT_NEAR(es.z(), ea.z(), 1e-12) << i;
+    kept_east = std::max(kept_east, std::abs(es.y()));
+    // Attitude: the error rotation (vehicle frame) of the chosen axes only: roll and yaw true,
+    // pitch the pitch of the error with every axis.
+    const RollPitchYaw rs =
+        rollPitchYawFromQuaternion(t.poses[i].q_world_vehicle.conjugate() * s[i].q_world_vehicle);
+    EXPECT_NEAR(rs.roll_rad, 0.0, 1e-9) << i;
+    EXPECT_NEAR(rs.yaw_rad, 0.0, 1e-9) << i;
+    kept_pitch = std::max(kept_pitch, std::abs(rs.pitch_rad));
+  }
+  // The kept axes do drift: a 1 cm, 0.1 degree walk over the track (tens of samples).
+  EXPECT_GT(kept_east, 0.01);
+  EXPECT_GT(kept_pitch, degToRad(0.1));
+}
+
+TEST(Trajectory, NavigationErrorAxesReadAndWriteTheirNames) {
+  EXPECT_EQ(navAxesFromNames("all"), kAllNavAxes);
+  EXPECT_EQ(navAxesFromNames("north,east,down,roll,pitch,yaw"), kAllNavAxes);
+  EXPECT_EQ(navAxesFromNames("yaw,north"), kNavNorth | kNavYaw);
+  EXPECT_EQ(navAxesNames(kNavNorth | kNavYaw), "north,yaw");
+  EXPECT_EQ(navAxesNames(kAllNavAxes), "all");
+  for (const unsigned axes : {unsigned{kNavDown}, kNavRoll | kNavPitch, kNavEast | kNavYaw}) {
+    EXPECT_EQ(navAxesFromNames(navAxesNames(axes)), axes);
+  }
+  for (const char* bad : {"", "north,", "heave", "north;east", "North"}) {
+    EXPECT_THROW(navAxesFromNames(bad), Error) << bad;
+  }
+}
+
 
 }  // namespace
 }  // namespace sonarcarve
