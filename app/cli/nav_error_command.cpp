@@ -40,7 +40,8 @@ void addNavErrorFlags(CLI::App& cmd, NavErrorSpec& spec) {
         ->capture_default_str();
   }
   cmd.add_option_function<std::string>(
-         "--nav-error-axes", [&spec](const std::string& names) { spec.axes = navAxesFromNames(names); },
+         "--nav-error-axes",
+         [&spec](const std::string& names) { spec.axes = navAxesFromNames(names); },
          "The axes the errors reach, the others kept true: all, or a list of north, east, down, "
          "roll, pitch, yaw (e.g. down,roll,pitch). The draws are those of all axes, so one seed "
          "tells which axes of a drift spoil a map")

@@ -140,8 +140,8 @@ Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& ta
 }
 
 namespace {
-constexpr std::array<const char*, 6> kNavAxisNames = {"north", "east", "down", "roll", "pitch",
-                                                      "yaw"};
+constexpr std::array<const char*, 6> kNavAxisNames = {"north", "east",  "down",
+                                                      "roll",  "pitch", "yaw"};
 }  // namespace
 
 unsigned navAxesFromNames(const std::string& names) {
@@ -157,7 +157,8 @@ unsigned navAxesFromNames(const std::string& names) {
     if (it == kNavAxisNames.end()) {
       throw Error("navigation error", "axes",
                   "expected all, or a comma-separated list of north, east, down, roll, pitch "
-                  "and yaw, found '" + word + "'");
+                  "and yaw, found '" +
+                      word + "'");
     }
     axes |= 1u << static_cast<unsigned>(it - kNavAxisNames.begin());
     begin = end + 1;

@@ -198,7 +198,14 @@ TEST(SimBeam, SeenPointsLieWithinTheVisibleBeamLevel) {
 
 // Frame `frame` of a demo scene's usual noise-free mission, rendered now, against the one stored
 // in tests/data/sim (README.md there): every pixel within 1 count (the rounding to whole counts
-// of a value that moved by float rounding), and only a few pixels differing at all.
+// of a value that moved by float rounding), and only a few pixels differing at all. A pixel sums
+// about a thousand rays (n) in float, whose order and fused operations differ between processors
+// (Embree's kernels for the instruction set at hand): the sum moves by about sqrt(n) times
+// float's unit roundoff (2^-24), kFloatDrift relative, which carries a pixel of v counts across
+// a half-count boundary with probability 2 kFloatDrift v. The frame may so differ in about
+// 2 kFloatDrift times its summed counts; three times that, and at least 5 pixels, are allowed
+// (7 of the seabed frame's pixels differ on an AMD EPYC, none on the machine that stored it).
+constexpr double kFloatDrift = 1.9e-6;
 void expectStoredFrame(const std::string& scene_name, const ImagingSettings& imaging, int frame,
                        const std::string& stored) {
   const cv::Mat before = readFramePng(test::testData(stored));
@@ -212,6 +219,7 @@ void expectStoredFrame(const std::string& scene_name, const ImagingSettings& ima
   const cv::Mat now = sim.render(trajectory.T_world_sonar(static_cast<std::size_t>(frame)));
   ASSERT_EQ(now.size(), before.size());
   int differ = 0;
+  const double allowed = std::max(5.0, 3.0 * 2.0 * kFloatDrift * cv::sum(before)[0]);
   for (int r = 0; r < now.rows; ++r) {
     for (int c = 0; c < now.cols; ++c) {
       const double counts =
@@ -221,7 +229,7 @@ void expectStoredFrame(const std::string& scene_name, const ImagingSettings& ima
       differ += diff > 0.0 ? 1 : 0;
     }
   }
-  EXPECT_LE(differ, 5) << stored;
+  EXPECT_LE(differ, allowed) << stored;
   EXPECT_GT(cv::countNonZero(before), 1000) << stored;
 }
 

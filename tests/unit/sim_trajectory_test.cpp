@@ -175,6 +175,5 @@ TEST(Trajectory, NavigationErrorAxesReadAndWriteTheirNames) {
   }
 }
 
-
 }  // namespace
 }  // namespace sonarcarve
