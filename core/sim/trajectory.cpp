@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include "common/angles.h"
@@ -139,11 +140,6 @@ Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& ta
               "unknown trajectory: expected vertical, orbit, lawnmower or a .csv of poses");
 }
 
-namespace {
-constexpr std::array<const char*, 6> kNavAxisNames = {"north", "east",  "down",
-                                                      "roll",  "pitch", "yaw"};
-}  // namespace
-
 unsigned navAxesFromNames(const std::string& names) {
   if (names == "all") {
     return kAllNavAxes;
@@ -153,14 +149,14 @@ unsigned navAxesFromNames(const std::string& names) {
   while (begin <= names.size()) {
     const std::size_t end = std::min(names.find(',', begin), names.size());
     const std::string word = names.substr(begin, end - begin);
-    const auto* it = std::find(kNavAxisNames.begin(), kNavAxisNames.end(), word);
-    if (it == kNavAxisNames.end()) {
+    const std::optional<NavAxis> axis = enumFromString<NavAxis>(word);
+    if (!axis) {
       throw Error("navigation error", "axes",
                   "expected all, or a comma-separated list of north, east, down, roll, pitch "
                   "and yaw, found '" +
                       word + "'");
     }
-    axes |= 1u << static_cast<unsigned>(it - kNavAxisNames.begin());
+    axes |= *axis;
     begin = end + 1;
   }
   return axes;
@@ -171,9 +167,9 @@ std::string navAxesNames(unsigned axes) {
     return "all";
   }
   std::string names;
-  for (std::size_t a = 0; a < kNavAxisNames.size(); ++a) {
-    if ((axes & (1u << a)) != 0) {
-      names += (names.empty() ? "" : ",") + std::string(kNavAxisNames[a]);
+  for (const EnumName<NavAxis>& n : kNavAxisNames) {
+    if ((axes & n.value) != 0) {
+      names += (names.empty() ? "" : ",") + std::string(n.name);
     }
   }
   return names;
@@ -207,12 +203,14 @@ std::vector<NavSample> withNavigationError(const std::vector<NavSample>& truth,
         position_walk + position_bias + draw(noise_rng, spec.position_noise_m);
     Eigen::Vector3d attitude_error =
         attitude_walk + attitude_bias + draw(noise_rng, degToRad(spec.attitude_noise_deg));
-    for (int a = 0; a < 3; ++a) {
-      if ((spec.axes & (1u << a)) == 0) {
-        position_error[a] = 0.0;
+    constexpr std::array<unsigned, 3> kPositionAxes = {kNavNorth, kNavEast, kNavDown};
+    constexpr std::array<unsigned, 3> kAttitudeAxes = {kNavRoll, kNavPitch, kNavYaw};
+    for (std::size_t a = 0; a < 3; ++a) {
+      if ((spec.axes & kPositionAxes[a]) == 0) {
+        position_error[static_cast<int>(a)] = 0.0;
       }
-      if ((spec.axes & (1u << (a + 3))) == 0) {
-        attitude_error[a] = 0.0;
+      if ((spec.axes & kAttitudeAxes[a]) == 0) {
+        attitude_error[static_cast<int>(a)] = 0.0;
       }
     }
     NavSample r = t;

@@ -13,11 +13,13 @@
 //   CSV        vehicle poses from a navigation CSV (docs/formats.md), one frame per row
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "common/enum_names.h"
 #include "geometry/scene.h"
 #include "sonar/mounting.h"
 #include "sonar/nav_track.h"
@@ -61,8 +63,6 @@ struct Trajectory {
 /// Throws Error for an unknown kind, an unreadable CSV or a target the kind cannot cover.
 Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& target);
 
-/// Navigation error, in the manner of a DVL-aided INS or USBL fix: three seeded kinds, each on
-/// the position (every axis, metres) and on the attitude (roll, pitch and yaw, degrees).
 /// The axes of a navigation error, as bits of NavErrorSpec::axes: position north, east, down
 /// (world) and attitude roll, pitch, yaw (the vehicle's).
 enum NavAxis : unsigned {
@@ -74,6 +74,17 @@ enum NavAxis : unsigned {
   kNavYaw = 1u << 5,
   kAllNavAxes = (1u << 6) - 1u,
 };
+inline constexpr std::array<EnumName<NavAxis>, 6> kNavAxisNames{{
+    {kNavNorth, "north"},
+    {kNavEast, "east"},
+    {kNavDown, "down"},
+    {kNavRoll, "roll"},
+    {kNavPitch, "pitch"},
+    {kNavYaw, "yaw"},
+}};
+constexpr const auto& enumNamesOf(NavAxis) {
+  return kNavAxisNames;
+}
 
 /// "north,east,yaw" as bits (kAllNavAxes for "all"). Throws Error naming the word that is not
 /// an axis, or on an empty list.
@@ -81,6 +92,8 @@ unsigned navAxesFromNames(const std::string& names);
 /// The bits as the names navAxesFromNames reads ("all" for kAllNavAxes).
 std::string navAxesNames(unsigned axes);
 
+/// Navigation error, in the manner of a DVL-aided INS or USBL fix: three seeded kinds, each on
+/// the position (every axis, metres) and on the attitude (roll, pitch and yaw, degrees).
 struct NavErrorSpec {
   double position_sigma_m = 0.0;    ///< random walk: step per navigation sample
   double attitude_sigma_deg = 0.0;  ///< random walk: step per navigation sample

@@ -148,8 +148,7 @@ TEST(Trajectory, NavigationErrorReachesOnlyTheChosenAxesWithTheDrawsOfAll) {
     EXPECT_NEAR(es.y(), ea.y(), 1e-12) << i;
     EXPECT_NEAR(es.z(), ea.z(), 1e-12) << i;
     kept_east = std::max(kept_east, std::abs(es.y()));
-    // Attitude: the error rotation (vehicle frame) of the chosen axes only: roll and yaw true,
-    // pitch the pitch of the error with every axis.
+    // Attitude: the error rotation (vehicle frame) turns about pitch alone: roll and yaw true.
     const RollPitchYaw rs =
         rollPitchYawFromQuaternion(t.poses[i].q_world_vehicle.conjugate() * s[i].q_world_vehicle);
     EXPECT_NEAR(rs.roll_rad, 0.0, 1e-9) << i;
