@@ -19,6 +19,12 @@ constexpr double kMinGain = 0.002;
 // where only one of them has a return) cost the scale squared: the frame agrees with the map
 // in at least this share of its beams, or it gives no measurement.
 constexpr double kMinAgreement = 0.5;
+// Behind a detector only returns clear of the background give edges, and at the right pose a
+// frame agrees with the map in nearly all of them (0.94 to 0.99 of its beams on the noisy riser
+// without drift); frames that agree less see structure the map holds badly (the top of a
+// structure that few frames see, a detector's blobs), and at 0.5 they pulled the noisy riser's
+// track 9 cm away without any drift (docs/navigation.md).
+constexpr double kMinAgreementBehindDetector = 0.9;
 // The voxels kept for a frame: in front of what the map predicts at the start pose by no more
 // than this many robust scales (and the farthest move of the search), within this margin
 // beyond the carved elevation.
@@ -99,7 +105,6 @@ std::vector<float> PoseRefiner::leadingEdges(const cv::Mat& image,
   // a detector, only one that begins a return (two of its first three bins lit: a lone speckle
   // the detector let through is not a surface); without one every lit pixel is a return.
   std::vector<float> edges(static_cast<std::size_t>(image.cols), kNoReturn);
-  const float threshold = litLevel();
   const float bin_min = geometry_.binMin();
   const auto resolution = static_cast<float>(geometry_.sonar().range().resolution_m);
   const auto r_min = static_cast<float>(geometry_.rangeMin());
@@ -109,7 +114,7 @@ std::vector<float> PoseRefiner::leadingEdges(const cv::Mat& image,
   const double right = bearings.centre(bearings.count() - 1) - kBearingMargin_rad;
   const bool exact = carve_.dark_pixels == CarveParams::DarkPixels::Exact;
   const auto lit = [&](int r, int c) {
-    return r < image.rows && image.at<float>(r, c) > threshold;
+    return r < image.rows && image.at<float>(r, c) > edgeLevel(r, c);
   };
   for (int c = 0; c < image.cols; ++c) {
     if (bearings.centre(c) < left || bearings.centre(c) > right) {
@@ -215,6 +220,8 @@ double PoseRefiner::cost(const std::vector<float>& measured,
   const auto half_voxel = static_cast<float>(0.5 * voxel_size_m_);
   const float lit = litLevel();
   const float table_scale = static_cast<float>(kPowerTable) / max_sin_elevation_;
+  const float bin_min = geometry_.binMin();
+  const float inv_resolution = geometry_.binInvResolution();
   std::vector<float> predicted(measured.size(), kNoReturn);
   for (const Eigen::Vector4f& q : q_sonar) {
     const Eigen::Vector3f p = M * (q.head<3>() - d);
@@ -230,6 +237,13 @@ double PoseRefiner::cost(const std::vector<float>& measured,
     const int last = geometry_.beamOf(bearing + half_width);
     if (first < 0 || last < 0) {
       continue;
+    }
+    if (!edge_level_.empty()) {
+      const int row = static_cast<int>((r - bin_min) * inv_resolution);
+      if (row < 0 || row >= edge_level_.rows ||
+          !(q.w() * power_[i] > edgeLevel(row, (first + last) / 2))) {
+        continue;  // too faint to stand clear of the background
+      }
     }
     for (int b = first; b <= last; ++b) {
       float& edge = predicted[static_cast<std::size_t>(b)];
@@ -277,6 +291,50 @@ float PoseRefiner::litLevel() const {
   return static_cast<float>(
       std::max(carve_.intensity_threshold,
                carvesMainLobe(geometry_.sonar(), carve_) ? carve_.keep_level : 0.0));
+}
+
+void PoseRefiner::keepVoxelsSeenBy(const std::vector<Eigen::Isometry3d>& T_world_sonar) {
+  std::vector<std::uint32_t> views(shell_.size(), 0);
+  const float sin2 = geometry_.sinHalfApertureSq();
+  const float rmin2 = geometry_.rangeMinSq();
+  const float rmax2 = geometry_.rangeMaxSq();
+  pool_.parallelFor(shell_.size(), 4096, [&](std::size_t begin, std::size_t end) {
+    for (const Eigen::Isometry3d& T : T_world_sonar) {
+      const Eigen::Isometry3f T_sonar_world = T.inverse().cast<float>();
+      for (std::size_t k = begin; k < end; ++k) {
+        const Eigen::Vector3f p = T_sonar_world * shell_[k];
+        const float r2 = p.squaredNorm();
+        if (r2 >= rmin2 && r2 < rmax2 && p.z() * p.z() <= r2 * sin2 &&
+            geometry_.beamOf(fastAtan2(p.y(), p.x())) >= 0) {
+          ++views[k];
+        }
+      }
+    }
+  });
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < shell_.size(); ++k) {
+    if (views[k] >= params_.min_views) {
+      shell_[kept] = shell_[k];
+      shell_values_[kept] = shell_values_[k];
+      ++kept;
+    }
+  }
+  shell_.resize(kept);
+  shell_values_.resize(kept);
+}
+
+float PoseRefiner::edgeLevel(int row, int beam) const {
+  const float lit = litLevel();
+  return edge_level_.empty() ? lit : std::max(lit, edge_level_.at<float>(row, beam));
+}
+
+void PoseRefiner::setEdgeLevel(cv::Mat level) {
+  const SonarModel& sonar = geometry_.sonar();
+  if (!level.empty() &&
+      (level.type() != CV_32F || level.rows != sonar.rows() || level.cols != sonar.cols())) {
+    throw Error("pose refinement", "edge level", "does not match the sonar model");
+  }
+  edge_level_ = std::move(level);
 }
 
 PoseMeasurement PoseRefiner::measure(const cv::Mat& image,
@@ -350,7 +408,8 @@ PoseMeasurement PoseRefiner::measure(const cv::Mat& image,
   m.correction.voxels = q.size();
   m.correction.score_before = 1.0 - objective(Vector6d::Zero()) / (cap * n);
   m.correction.score_after = 1.0 - best_cost / (cap * n);
-  if (m.correction.score_after < kMinAgreement) {
+  if (m.correction.score_after <
+      (edge_level_.empty() ? kMinAgreement : kMinAgreementBehindDetector)) {
     return m;
   }
   // The information: the mean cost per beam is sum(e^2)/n near the peak; as one effective

@@ -36,7 +36,7 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 struct PoseRefinementParams {
   /// Whether the carving stage refines poses at all. Off by default: it improves drifted
-  /// missions but costs about 0.04 F without drift (docs/navigation.md).
+  /// missions but costs 0.01 F on the riser without drift (docs/navigation.md).
   bool enabled = false;
   /// The search window around the navigation, on each axis: no refined pose leaves it.
   double max_translation_m = 0.5;
@@ -56,6 +56,10 @@ struct PoseRefinementParams {
   std::size_t min_voxels = 200;
   /// At most this many shell voxels are scored (evenly thinned beyond).
   std::size_t max_voxels = 20000;
+  /// Behind a detector only shell voxels inside +-aperture/2 of at least this many frames
+  /// predict edges (keepVoxelsSeenBy), as occlusion resolution takes surface points only among
+  /// voxels that many frames see.
+  std::size_t min_views = 5;
 };
 
 /// The correction of one frame: its sonar's position moved by `translation_world_m` and its
@@ -106,6 +110,16 @@ class PoseRefiner {
   /// The cost per beam with a return of `correction` (what measure() minimises, for tests).
   double meanCostOf(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar_nav,
                     const PoseCorrection& correction, double scale_m) const;
+  /// Behind a detector: per pixel (CV_32F, the sonar's rows x cols), the level over which a
+  /// pixel of a measured frame is taken for a return, and over which a voxel's value times
+  /// the beam's power predicts one (never under the carving's own level). A detector lets some
+  /// background through; a leading edge must stand clear of it, or every beam begins at a
+  /// false alarm. With a level a frame must also agree with the map in more of its beams to
+  /// be measured. Empty (the default): the carving's level alone.
+  void setEdgeLevel(cv::Mat level);
+  /// Keeps only the shell voxels that at least `params.min_views` of the frames placed at
+  /// `T_world_sonar` see inside +-aperture/2 (the range window and the field of view).
+  void keepVoxelsSeenBy(const std::vector<Eigen::Isometry3d>& T_world_sonar);
   /// A correction clamped into the window.
   Vector6d clamped(Vector6d x) const;
   std::size_t shellVoxels() const { return shell_.size(); }
@@ -123,6 +137,8 @@ class PoseRefiner {
   double keepBehind(double scale_m) const;
   /// The intensity over which a pixel is lit, as carving keeps it.
   float litLevel() const;
+  /// The intensity over which pixel (row, beam) begins a leading edge.
+  float edgeLevel(int row, int beam) const;
   /// Sum over beams of the squared difference between predicted and measured leading edges,
   /// each capped at scale^2 (a beam where only one has a return costs scale^2).
   double cost(const std::vector<float>& measured, const std::vector<Eigen::Vector4f>& q_sonar,
@@ -138,6 +154,7 @@ class PoseRefiner {
   static constexpr std::size_t kPowerTable = 1024;
   std::vector<float> power_;  // the beam's power over |sin(elevation)|
   float max_sin_elevation_ = 0.0f;
+  cv::Mat edge_level_;  // empty: litLevel()
 };
 
 }  // namespace sonarcarve

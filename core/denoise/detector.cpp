@@ -102,6 +102,13 @@ cv::Mat Detector::zTest(const cv::Mat& image) const {
   return out;
 }
 
+cv::Mat Detector::backgroundSigma() const {
+  if (params_.mode != DetectorMode::ZTest) {
+    return {};
+  }
+  return model_->stddev() * static_cast<double>(params_.smoothing);
+}
+
 double Detector::cfarAlpha() const {
   const double n = 2.0 * params_.cfar_train;
   return n * (std::pow(params_.cfar_pfa, -1.0 / n) - 1.0);

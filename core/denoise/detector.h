@@ -68,6 +68,10 @@ class Detector {
   const DetectorParams& params() const { return params_; }
   /// The CA-CFAR threshold factor for the parameters' training size and false-alarm rate.
   double cfarAlpha() const;
+  /// ztest: the background's standard deviation per pixel before the box filter (the noise
+  /// model's, over the filter's averaging: a box of w x w independent pixels divides it by
+  /// w), CV_32F of the frame's size; empty for the other detectors.
+  cv::Mat backgroundSigma() const;
 
  private:
   cv::Mat zTest(const cv::Mat& image) const;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <random>
 
 #include "common/angles.h"
@@ -104,11 +105,10 @@ TEST(Cfar, DetectsAPointTargetOfKnownSnrAndHoldsItsFalseAlarmRate) {
   EXPECT_NEAR(detector.cfarAlpha(), 24.0 * (std::pow(1e-3, -1.0 / 24.0) - 1.0), 1e-12);
 }
 
-TEST(NoiseModel, LearnsTheBackgroundOfEmptyWaterFrames) {
-  test::ScratchDir dir;
-  const SonarModel sonar = smallSonar(50, 20);
-  MissionWriter writer(dir.path() / "empty", "empty", sonar, Mounting{});
-  std::mt19937 rng(9);
+// A mission of 60 frames of Gaussian noise, mean 200 and standard deviation 20, in `dir`.
+void writeEmptyWater(const std::filesystem::path& dir, const SonarModel& sonar, unsigned seed) {
+  MissionWriter writer(dir, "empty", sonar, Mounting{});
+  std::mt19937 rng(seed);
   std::normal_distribution<float> noise(200.0f, 20.0f);
   std::vector<NavSample> nav;
   for (int i = 0; i < 60; ++i) {
@@ -122,6 +122,12 @@ TEST(NoiseModel, LearnsTheBackgroundOfEmptyWaterFrames) {
     nav.push_back(s);
   }
   writer.finish(NavTrack(nav));
+}
+
+TEST(NoiseModel, LearnsTheBackgroundOfEmptyWaterFrames) {
+  test::ScratchDir dir;
+  const SonarModel sonar = smallSonar(50, 20);
+  writeEmptyWater(dir.path() / "empty", sonar, 9);
   SilentProgress progress;
   const NoiseModel model =
       NoiseModel::learn(readMission(dir.path() / "empty"), progress, nullptr, 1);
@@ -133,6 +139,28 @@ TEST(NoiseModel, LearnsTheBackgroundOfEmptyWaterFrames) {
   const NoiseModel back = NoiseModel::load(dir.path() / "noise.yaml");
   EXPECT_EQ(cv::norm(back.mean(), model.mean(), cv::NORM_INF), 0.0);
   EXPECT_EQ(back.smoothing(), 1);
+}
+
+// The Z-test's model holds the box-filtered background; the raw background's standard
+// deviation is w times the model's for a w x w box over independent pixels.
+TEST(ZTest, GivesTheRawBackgroundsStandardDeviationBehindItsBoxFilter) {
+  test::ScratchDir dir;
+  const SonarModel sonar = smallSonar(50, 20);
+  writeEmptyWater(dir.path() / "empty", sonar, 5);
+  SilentProgress progress;
+  const auto model = std::make_shared<const NoiseModel>(
+      NoiseModel::learn(readMission(dir.path() / "empty"), progress, nullptr, 3));
+  DetectorParams params;
+  params.mode = DetectorMode::ZTest;
+  params.smoothing = 3;
+  const cv::Mat sigma = Detector(params, model, sonar).backgroundSigma();
+  ASSERT_EQ(sigma.size(), cv::Size(sonar.cols(), sonar.rows()));
+  // Away from the borders, where the box holds nine distinct pixels: each pixel's deviation is
+  // known from 60 frames to about 1 / sqrt(2 * 59) = 9 %, their mean over 48 x 18 pixels (each
+  // box shares pixels with its neighbours) to well under 1 count of 20.
+  EXPECT_NEAR(cv::mean(sigma(cv::Rect(1, 1, sonar.cols() - 2, sonar.rows() - 2)))[0], 20.0, 1.0);
+  params.mode = DetectorMode::Cfar;
+  EXPECT_TRUE(Detector(params, nullptr, sonar).backgroundSigma().empty());
 }
 
 TEST(NoiseModel, AModelOfAnotherGeometryIsRefusedWithAClearMessage) {

@@ -3,6 +3,7 @@
 // search window, and turning both off changes nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "carve/carver.h"
@@ -147,6 +148,75 @@ TEST_F(PoseRefinement, TheRefinedPoseNeverLeavesTheSearchWindow) {
     EXPECT_GT(c.translation_world_m.norm(), 0.5 * window.max_translation_m)
         << "it should have moved towards the truth";
   }
+}
+
+// Behind a detector some background gets through: runs of two bins that begin a return in
+// most beams, nearer than the structure. The edge level keeps them from beginning edges.
+TEST_F(PoseRefinement, BehindADetectorReturnsUnderTheEdgeLevelBeginNoEdges) {
+  cv::Mat image = (*images_)[kHeldOut].clone();
+  std::vector<float> lit;
+  for (auto it = image.begin<float>(); it != image.end<float>(); ++it) {
+    if (*it > 0.0f) {
+      lit.push_back(*it);
+    }
+  }
+  ASSERT_FALSE(lit.empty());
+  std::nth_element(lit.begin(), lit.begin() + lit.size() / 100, lit.end());
+  // Under all but a hundredth of the riser's returns, and twice what the leaks read.
+  const float level = lit[lit.size() / 100];
+  // The map carved, as the pipeline carves its alignment maps, from returns over the level.
+  const CarveParams p = params();
+  VoxelMap map(p.voxel_size_m, *p.region);
+  {
+    FastCarver carver(map, *sonar_, p, *pool_);
+    for (int i = 0; i < kFrames; ++i) {
+      if (i != kHeldOut) {
+        const cv::Mat& frame = (*images_)[static_cast<std::size_t>(i)];
+        cv::Mat over = frame.clone();
+        over.setTo(0.0f, frame <= level);
+        carver.integrate(over, truePose(i), static_cast<std::uint32_t>(i + 1));
+      }
+    }
+  }
+  const int near_row = static_cast<int>(2.0 / sonar_->range().resolution_m);
+  for (int beam = 0; beam < image.cols; beam += 2) {
+    const int row = near_row + (beam * 7) % 60;
+    image.at<float>(row, beam) = 0.5f * level;
+    image.at<float>(row + 1, beam) = 0.5f * level;
+  }
+  const Eigen::Isometry3d truth = truePose(kHeldOut);
+  const Eigen::Isometry3d prior = displaced(truth, {0.06, 0.0, 0.0}, 0.0);
+  const Eigen::Vector3d ahead(4.1, 0.0, 0.0);
+  PoseRefiner refiner(map, *sonar_, p, PoseRefinementParams{}, *pool_);
+  const PoseCorrection blind = refiner.measure(image, prior, Vector6d::Zero(), kScale).correction;
+  // Without a level the leaks begin edges in beams where the map predicts none: each costs the
+  // cap whatever the pose, and the frame agrees with the map in few of its beams.
+  refiner.setEdgeLevel(cv::Mat(image.size(), CV_32F, cv::Scalar(level)));
+  const PoseCorrection c = refiner.measure(image, prior, Vector6d::Zero(), kScale).correction;
+  EXPECT_LT((c.applied(prior) * ahead - truth * ahead).norm(), kVoxel);
+  EXPECT_GT(c.score_after, blind.score_after + 0.5)
+      << "with the level " << c.score_after << ", without " << blind.score_after;
+}
+
+// Behind a detector only voxels that enough frames see predict edges.
+TEST_F(PoseRefinement, VoxelsSeenByFewerFramesThanMinViewsPredictNothing) {
+  const CarveParams p = params();
+  VoxelMap map(p.voxel_size_m, *p.region);
+  carveAllButHeldOut(map, p);
+  PoseRefiner refiner(map, *sonar_, p, PoseRefinementParams{}, *pool_);
+  const std::size_t all = refiner.shellVoxels();
+  std::vector<Eigen::Isometry3d> poses;
+  for (int i = 0; i < kFrames; ++i) {
+    poses.push_back(truePose(i));
+  }
+  PoseRefiner seen_by_all(map, *sonar_, p, PoseRefinementParams{}, *pool_);
+  seen_by_all.keepVoxelsSeenBy(poses);
+  EXPECT_GT(seen_by_all.shellVoxels(), 0u);
+  EXPECT_LE(seen_by_all.shellVoxels(), all);
+  // Four frames: no voxel is inside five frames' apertures.
+  poses.resize(PoseRefinementParams{}.min_views - 1);
+  refiner.keepVoxelsSeenBy(poses);
+  EXPECT_EQ(refiner.shellVoxels(), 0u);
 }
 
 TEST_F(PoseRefinement, WithTooFewVoxelsInViewAFrameGivesNoMeasurement) {
