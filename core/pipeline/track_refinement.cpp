@@ -95,17 +95,17 @@ std::vector<PoseCorrection> refineTrack(const TrackRefinementSetup& setup,
       progress.report(stage, n + 1, 2 * frames.size());
     }
     PoseRefiner refiner(*carver->blockMap(), setup.sonar, carve, params, setup.pool);
-    if (!level.empty()) {
-      // Behind a detector what few frames see stays in the map uncarved (dark pixels carve
-      // only inside +-aperture/2): the background near the sonar would predict edges.
-      refiner.setEdgeLevel(level);
-      std::vector<Eigen::Isometry3d> poses;
-      poses.reserve(frames.size());
-      for (std::size_t n = 0; n < frames.size(); ++n) {
-        poses.push_back(PoseCorrection::of(track[n]).applied(frames[n].T_world_sonar));
-      }
-      refiner.keepVoxelsSeenBy(poses);
+    refiner.setEdgeLevel(level);
+    // Edges are predicted only from voxels that enough frames see, as occlusion resolution
+    // takes surface points: behind a detector what few frames see stays in the map uncarved
+    // (dark pixels carve only inside +-aperture/2), and the background near the sonar would
+    // predict edges in most beams.
+    std::vector<Eigen::Isometry3d> poses;
+    poses.reserve(frames.size());
+    for (std::size_t n = 0; n < frames.size(); ++n) {
+      poses.push_back(PoseCorrection::of(track[n]).applied(frames[n].T_world_sonar));
     }
+    refiner.keepVoxelsSeenBy(poses);
     // Residuals are capped at the map's expected error, and at no less than two range bins.
     const double scale = std::max(tolerance, 2.0 * resolution);
     for (std::size_t n = 0; n < frames.size(); ++n) {
