@@ -113,8 +113,10 @@ std::vector<float> PoseRefiner::leadingEdges(const cv::Mat& image,
   const double left = bearings.centre(0) + kBearingMargin_rad;
   const double right = bearings.centre(bearings.count() - 1) - kBearingMargin_rad;
   const bool exact = carve_.dark_pixels == CarveParams::DarkPixels::Exact;
+  const float lit_level = litLevel();
   const auto lit = [&](int r, int c) {
-    return r < image.rows && image.at<float>(r, c) > edgeLevel(r, c);
+    return r < image.rows &&
+           image.at<float>(r, c) > (edge_level_.empty() ? lit_level : edge_level_.at<float>(r, c));
   };
   for (int c = 0; c < image.cols; ++c) {
     if (bearings.centre(c) < left || bearings.centre(c) > right) {
@@ -241,7 +243,7 @@ double PoseRefiner::cost(const std::vector<float>& measured,
     if (!edge_level_.empty()) {
       const int row = static_cast<int>((r - bin_min) * inv_resolution);
       if (row < 0 || row >= edge_level_.rows ||
-          !(q.w() * power_[i] > edgeLevel(row, (first + last) / 2))) {
+          !(q.w() * power_[i] > edge_level_.at<float>(row, (first + last) / 2))) {
         continue;  // too faint to stand clear of the background
       }
     }
@@ -323,18 +325,15 @@ void PoseRefiner::keepVoxelsSeenBy(const std::vector<Eigen::Isometry3d>& T_world
   shell_values_.resize(kept);
 }
 
-float PoseRefiner::edgeLevel(int row, int beam) const {
-  const float lit = litLevel();
-  return edge_level_.empty() ? lit : std::max(lit, edge_level_.at<float>(row, beam));
-}
-
 void PoseRefiner::setEdgeLevel(cv::Mat level) {
   const SonarModel& sonar = geometry_.sonar();
   if (!level.empty() &&
       (level.type() != CV_32F || level.rows != sonar.rows() || level.cols != sonar.cols())) {
     throw Error("pose refinement", "edge level", "does not match the sonar model");
   }
-  edge_level_ = std::move(level);
+  // Never under the carving's own level: held once here, looked up per pixel.
+  edge_level_ =
+      level.empty() ? cv::Mat() : cv::Mat(cv::max(level, static_cast<double>(litLevel())));
 }
 
 PoseMeasurement PoseRefiner::measure(const cv::Mat& image,

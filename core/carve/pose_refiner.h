@@ -138,8 +138,6 @@ class PoseRefiner {
   double keepBehind(double scale_m) const;
   /// The intensity over which a pixel is lit, as carving keeps it.
   float litLevel() const;
-  /// The intensity over which pixel (row, beam) begins a leading edge.
-  float edgeLevel(int row, int beam) const;
   /// Sum over beams of the squared difference between predicted and measured leading edges,
   /// each capped at scale^2 (a beam where only one has a return costs scale^2).
   double cost(const std::vector<float>& measured, const std::vector<Eigen::Vector4f>& q_sonar,
@@ -155,7 +153,7 @@ class PoseRefiner {
   static constexpr std::size_t kPowerTable = 1024;
   std::vector<float> power_;  // the beam's power over |sin(elevation)|
   float max_sin_elevation_ = 0.0f;
-  cv::Mat edge_level_;  // empty: litLevel()
+  cv::Mat edge_level_;  // per pixel, at least litLevel(); empty: litLevel() everywhere
 };
 
 }  // namespace sonarcarve

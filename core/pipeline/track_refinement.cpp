@@ -79,6 +79,11 @@ std::vector<PoseCorrection> refineTrack(const TrackRefinementSetup& setup,
       throw Error("parameters", "pose_refinement", "pose refinement needs the fast engine");
     }
     const std::string stage = "align " + std::to_string(pass + 1);
+    std::vector<Eigen::Isometry3d> poses;
+    poses.reserve(frames.size());
+    for (std::size_t n = 0; n < frames.size(); ++n) {
+      poses.push_back(PoseCorrection::of(track[n]).applied(frames[n].T_world_sonar));
+    }
     for (std::size_t n = 0; n < frames.size(); ++n) {
       if (progress.cancelled()) {
         return {};
@@ -89,8 +94,7 @@ std::vector<PoseCorrection> refineTrack(const TrackRefinementSetup& setup,
       } catch (const Error&) {
         continue;  // the carving stage reports it
       }
-      carver->integrate(widenedReturns(returnsOverLevel(frame.image, level), bins, beams),
-                        PoseCorrection::of(track[n]).applied(frames[n].T_world_sonar),
+      carver->integrate(widenedReturns(returnsOverLevel(frame.image, level), bins, beams), poses[n],
                         static_cast<std::uint32_t>(n + 1));
       progress.report(stage, n + 1, 2 * frames.size());
     }
@@ -100,11 +104,6 @@ std::vector<PoseCorrection> refineTrack(const TrackRefinementSetup& setup,
     // takes surface points: behind a detector what few frames see stays in the map uncarved
     // (dark pixels carve only inside +-aperture/2), and the background near the sonar would
     // predict edges in most beams.
-    std::vector<Eigen::Isometry3d> poses;
-    poses.reserve(frames.size());
-    for (std::size_t n = 0; n < frames.size(); ++n) {
-      poses.push_back(PoseCorrection::of(track[n]).applied(frames[n].T_world_sonar));
-    }
     refiner.keepVoxelsSeenBy(poses);
     // Residuals are capped at the map's expected error, and at no less than two range bins.
     const double scale = std::max(tolerance, 2.0 * resolution);

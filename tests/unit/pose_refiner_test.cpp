@@ -63,13 +63,16 @@ class PoseRefinement : public ::testing::Test {
     return p;
   }
 
-  // Every frame but the held-out one carved at its true pose.
-  static void carveAllButHeldOut(VoxelMap& map, const CarveParams& p) {
+  // Every frame but the held-out one carved at its true pose, with only its returns over
+  // `level` (as the pipeline carves its alignment maps behind a detector).
+  static void carveAllButHeldOut(VoxelMap& map, const CarveParams& p, float level = 0.0f) {
     FastCarver carver(map, *sonar_, p, *pool_);
     for (int i = 0; i < kFrames; ++i) {
       if (i != kHeldOut) {
-        carver.integrate((*images_)[static_cast<std::size_t>(i)], truePose(i),
-                         static_cast<std::uint32_t>(i + 1));
+        const cv::Mat& frame = (*images_)[static_cast<std::size_t>(i)];
+        cv::Mat over = frame.clone();
+        over.setTo(0.0f, frame <= level);
+        carver.integrate(over, truePose(i), static_cast<std::uint32_t>(i + 1));
       }
     }
   }
@@ -164,20 +167,9 @@ TEST_F(PoseRefinement, BehindADetectorReturnsUnderTheEdgeLevelBeginNoEdges) {
   std::nth_element(lit.begin(), lit.begin() + lit.size() / 100, lit.end());
   // Under all but a hundredth of the riser's returns, and twice what the leaks read.
   const float level = lit[lit.size() / 100];
-  // The map carved, as the pipeline carves its alignment maps, from returns over the level.
   const CarveParams p = params();
   VoxelMap map(p.voxel_size_m, *p.region);
-  {
-    FastCarver carver(map, *sonar_, p, *pool_);
-    for (int i = 0; i < kFrames; ++i) {
-      if (i != kHeldOut) {
-        const cv::Mat& frame = (*images_)[static_cast<std::size_t>(i)];
-        cv::Mat over = frame.clone();
-        over.setTo(0.0f, frame <= level);
-        carver.integrate(over, truePose(i), static_cast<std::uint32_t>(i + 1));
-      }
-    }
-  }
+  carveAllButHeldOut(map, p, level);
   const int near_row = static_cast<int>(2.0 / sonar_->range().resolution_m);
   for (int beam = 0; beam < image.cols; beam += 2) {
     const int row = near_row + (beam * 7) % 60;
