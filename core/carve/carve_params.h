@@ -48,6 +48,11 @@ struct CarveParams {
   /// votes tolerate views placed a little off by their navigation; they carve ghosts and
   /// noise later.
   int carve_votes = 1;
+  /// Shadow-aware carving (fast engine): a frame carves a voxel only if no pixel nearer on
+  /// the voxel's own ray (beam and elevation) may hold a surface that hides it (lit, bounding
+  /// a return above the keep level there, on a voxel not carved; carve/shadow_limit.h). Off:
+  /// the seed paper's rule, where a structure's shadow carves whatever lies in it.
+  bool shadow_aware = false;
 };
 
 /// An image of whole counts holds under half a count where it reads 0.

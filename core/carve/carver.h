@@ -40,6 +40,8 @@ struct VisibilityLimit {
   int elevation_bins = 1;
   double elevation_step_rad = 0.0;
   double margin_m = 0.0;
+  /// Bin 0 starts this far under the sonar's axis; 0: at the aperture's lower edge.
+  double half_elevation_rad = 0.0;
 };
 
 /// What an engine holds, for reports and memory budgets.

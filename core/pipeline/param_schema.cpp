@@ -204,6 +204,14 @@ std::vector<ParamSpec> makeSchema() {
        .gui = {.group = "Carving", .label = "Carve votes", .advanced = true, .min = 1, .max = 255},
        .access = field([](auto& p) -> auto& { return p.carve.carve_votes; }),
        .applies = usesFastEngine},
+      {.key = "shadow_aware_carving",
+       .help = "fast engine: a frame carves a voxel only where no surface it may see lies "
+               "nearer on the voxel's ray, so a structure's acoustic shadow does not carve "
+               "what other views see (orbits, several passes); false: the seed paper's rule",
+       .flag = "--shadow-aware-carving",
+       .gui = {.group = "Carving", .label = "Shadow-aware carving", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.carve.shadow_aware; }),
+       .applies = usesFastEngine},
       {.key = "voxel_size_m",
        .unit = "m",
        .range = kPositive,
