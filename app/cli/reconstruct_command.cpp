@@ -124,6 +124,9 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   const ReconstructionResult result = pipeline.run(progress);
   progress.finish();
   std::cerr << "denoising: " << result.detector << ", " << result.denoising << "\n";
+  if (!result.shadow_carving.empty()) {
+    std::cerr << "shadow-aware carving: " << result.shadow_carving << "\n";
+  }
   if (result.keep_level.frames > 0) {
     std::cerr << describeKeepLevel(result.keep_level, params.carve.dynamic_range_db) << "\n";
   }

@@ -262,6 +262,49 @@ BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
   return change;
 }
 
+// Whether a block (its bounding sphere in the sonar frame) lies wholly behind the visibility
+// limit of every ray it may cross, so that the frame observes none of its voxels. Rays are
+// taken over the bearings and elevations the sphere spans, clamped to the limit's bins as
+// the kernel clamps a voxel's.
+bool hiddenBlock(const FrameView& f, const CarvingGeometry& g, const Eigen::Vector3d& c,
+                 double radius) {
+  if (f.first_return == nullptr) {
+    return false;
+  }
+  const double range = c.norm();
+  const double horizontal = std::hypot(c.x(), c.y());
+  if (range <= radius || horizontal <= radius) {
+    return false;
+  }
+  const double bearing = std::atan2(c.y(), c.x());
+  const double half_bearing = std::asin(radius / horizontal);
+  const int cols = f.cols;
+  const auto beamAt = [&](double b, int outside) {
+    const int beam = g.beamOf(static_cast<float>(b));
+    return beam >= 0 ? beam : outside;
+  };
+  const int b0 = beamAt(bearing - half_bearing, 0);
+  const int b1 = beamAt(bearing + half_bearing, cols - 1);
+  const double elevation = std::asin(-c.z() / range);
+  const double half_elevation = std::asin(radius / range);
+  const auto binAt = [&](double e) {
+    return std::clamp(static_cast<int>((e + f.limit_half_elevation) * f.inv_elevation_step), 0,
+                      f.elevation_bins - 1);
+  };
+  const int k0 = binAt(elevation - half_elevation);
+  const int k1 = binAt(elevation + half_elevation);
+  const float nearest = static_cast<float>(range - radius) - f.margin;
+  for (int b = std::min(b0, b1); b <= std::max(b0, b1); ++b) {
+    const float* limits = f.first_return + static_cast<std::size_t>(b) * f.elevation_bins;
+    for (int k = k0; k <= k1; ++k) {
+      if (!(limits[k] < nearest)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 FastCarver::FastCarver(VoxelMap& map, const SonarModel& sonar, const CarveParams& params,
@@ -357,7 +400,9 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
         }
         const Eigen::Vector3d origin = (rel + map_.firstBlock()).cast<double>() * block;
         const Eigen::Vector3d centre = origin + Eigen::Vector3d::Constant(0.5 * block);
-        if (!geometry_.sphereMayTouchFrustum(T_sonar_world * centre, radius, sin_half, cos_half)) {
+        const Eigen::Vector3d centre_sonar = T_sonar_world * centre;
+        if (!geometry_.sphereMayTouchFrustum(centre_sonar, radius, sin_half, cos_half) ||
+            hiddenBlock(frame, geometry_, centre_sonar, radius)) {
           continue;
         }
         ++my_visited;

@@ -36,12 +36,19 @@ std::vector<float> shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& 
     }
   }
   const int rows = std::min(pixels.rows, sonar.rows());
+  const Eigen::Matrix3d R = T_world_sonar.linear();
+  const Eigen::Vector3d origin = T_world_sonar.translation();
+  const double voxel_size = map.voxelSize();
   pool.parallelFor(static_cast<std::size_t>(beams), 8, [&](std::size_t begin, std::size_t end) {
     std::vector<char> open(static_cast<std::size_t>(bins));
+    std::vector<Eigen::Vector3d> direction(static_cast<std::size_t>(bins));  // world, unit
     for (std::size_t b = begin; b < end; ++b) {
       const int beam = static_cast<int>(b);
       const double bearing = sonar.bearings().centre(beam);
       const double cb = std::cos(bearing), sb = std::sin(bearing);
+      for (int k = 0; k < bins; ++k) {
+        direction[k] = R * Eigen::Vector3d(cos_el[k] * cb, cos_el[k] * sb, -sin_el[k]);
+      }
       float* limit = limits.data() + b * static_cast<std::size_t>(bins);
       std::fill(open.begin(), open.end(), char{1});
       int left = bins;
@@ -61,8 +68,8 @@ std::vector<float> shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& 
           if (setup.beam_aware && intensity * inverse_gain[k] <= setup.keep_level) {
             continue;  // no surface above the keep level could light this pixel from there
           }
-          const Eigen::Vector3d p_sonar(r * cos_el[k] * cb, r * cos_el[k] * sb, -r * sin_el[k]);
-          if (map.value(map.voxelOf(T_world_sonar * p_sonar)) == 0.0f) {
+          const Eigen::Vector3d voxel = ((origin + r * direction[k]) / voxel_size).array().floor();
+          if (map.value(voxel.cast<int>()) == 0.0f) {
             continue;  // carved: empty water, whatever lit the pixel is elsewhere on the arc
           }
           limit[k] = static_cast<float>(r);

@@ -207,10 +207,11 @@ std::vector<ParamSpec> makeSchema() {
       {.key = "shadow_aware_carving",
        .help = "fast engine: a frame carves a voxel only where no surface it may see lies "
                "nearer on the voxel's ray, so a structure's acoustic shadow does not carve "
-               "what other views see (orbits, several passes); false: the seed paper's rule",
+               "what other views see; auto: on where the views' headings span over 20 "
+               "degrees (orbits, several passes, lawnmowers); false: the seed paper's rule",
        .flag = "--shadow-aware-carving",
        .gui = {.group = "Carving", .label = "Shadow-aware carving", .advanced = true},
-       .access = field([](auto& p) -> auto& { return p.carve.shadow_aware; }),
+       .access = field([](auto& p) -> auto& { return p.shadow_aware_carving; }),
        .applies = usesFastEngine},
       {.key = "voxel_size_m",
        .unit = "m",

@@ -12,6 +12,7 @@
 #include "pipeline/evicting_surface.h"
 #include "pipeline/frame_stage.h"
 #include "pipeline/memory_budget.h"
+#include "pipeline/shadow_carving.h"
 #include "pipeline/size_limits.h"
 #include "pipeline/surface_stage.h"
 
@@ -73,6 +74,11 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   // Denoise, then carve.
   CarveStageParams stage{params_.engine,          params_.carve, params_.occlusion_aware_carving,
                          params_.pose_refinement, earlier_map_,  carve_frames_};
+  if (params_.engine == Engine::Fast) {
+    const ShadowCarvingChoice shadow = chooseShadowCarving(params_.shadow_aware_carving, posed);
+    stage.carve.shadow_aware = shadow.on;
+    result.shadow_carving = shadow.reason;
+  }
   // A region outside every view is an error before any frame is read.
   const Eigen::AlignedBox3d bounds = CarveStage(sonar_, stage, pool_).mapBounds(posed);
   const MemoryWatch memory(memoryBudget(params_.memory_budget_mb, availableMemory()));

@@ -40,9 +40,10 @@ struct ReconstructionResult {
   std::string temporary_file_problem;
   OccupancyStore occupancy;  ///< an evicting run's .bt export blocks
   std::size_t frames_used = 0;
-  std::string detector;   ///< the detector that ran (`auto` made concrete)
-  std::string denoising;  ///< which noise model it used and why, in words
-  KeepLevel keep_level;   ///< beam-aware carving's keep level (level 0 when not beam-aware)
+  std::string detector;        ///< the detector that ran (`auto` made concrete)
+  std::string denoising;       ///< which noise model it used and why, in words
+  std::string shadow_carving;  ///< whether frames carved shadow-aware and why, in words
+  KeepLevel keep_level;        ///< beam-aware carving's keep level (level 0 when not beam-aware)
   /// Pose refinement of each carved frame (empty when it is off).
   std::vector<FramePoseRefinement> refinement;
   std::vector<FrameProblem> skipped;

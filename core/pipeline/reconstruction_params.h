@@ -32,6 +32,18 @@ constexpr const auto& enumNamesOf(Engine) {
   return kEngineNames;
 }
 
+/// Shadow-aware carving (CarveParams::shadow_aware): on, off, or `auto`, on for missions
+/// that view the scene from several sides (pipeline/shadow_carving.h).
+enum class ShadowCarving { Auto, On, Off };
+inline constexpr std::array<EnumName<ShadowCarving>, 3> kShadowCarvingNames{{
+    {ShadowCarving::Auto, "auto"},
+    {ShadowCarving::On, "true"},
+    {ShadowCarving::Off, "false"},
+}};
+constexpr const auto& enumNamesOf(ShadowCarving) {
+  return kShadowCarvingNames;
+}
+
 struct ReconstructionParams {
   Engine engine = Engine::Fast;
   CarveParams carve;
@@ -53,6 +65,8 @@ struct ReconstructionParams {
   /// shadowed from some views are not carved away by them. On the riser demo it gained 0.7 %
   /// completeness for 2.7 times the carving time: off by default.
   bool occlusion_aware_carving = false;
+  /// Fast engine: whether frames carve shadow-aware (sets carve.shadow_aware for the run).
+  ShadowCarving shadow_aware_carving = ShadowCarving::Auto;
   /// Fast engine: each frame aligned to the map carved so far before it carves (issue 15).
   PoseRefinementParams pose_refinement;
   /// What the run may hold in memory, MiB (2^20 bytes); 0 = a share of the memory available

@@ -16,6 +16,7 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                            {"engine", std::string(toString(params.engine))},
                            {"detector", result.detector},
                            {"denoising", result.denoising},
+                           {"shadow_aware_carving", result.shadow_carving},
                            {"smoothing", params.detector.smoothing},
                            {"z", params.detector.z},
                            {"frames_used", result.frames_used},

@@ -1,0 +1,48 @@
+#include "pipeline/shadow_carving.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "common/angles.h"
+
+namespace sonarcarve {
+
+double headingSpreadDeg(const std::vector<PosedFrame>& frames) {
+  const double min_horizontal = std::sin(degToRad(10.0));
+  std::vector<double> headings;
+  for (const PosedFrame& f : frames) {
+    const Eigen::Vector3d axis = f.T_world_sonar.linear().col(0);
+    if (std::hypot(axis.x(), axis.y()) >= min_horizontal) {
+      headings.push_back(radToDeg(std::atan2(axis.y(), axis.x())));
+    }
+  }
+  if (headings.size() < 2) {
+    return 0.0;
+  }
+  std::sort(headings.begin(), headings.end());
+  // The spread is the circle less its widest gap between neighbouring headings.
+  double widest = headings.front() + 360.0 - headings.back();
+  for (std::size_t i = 1; i < headings.size(); ++i) {
+    widest = std::max(widest, headings[i] - headings[i - 1]);
+  }
+  return 360.0 - widest;
+}
+
+ShadowCarvingChoice chooseShadowCarving(ShadowCarving mode, const std::vector<PosedFrame>& frames) {
+  if (mode == ShadowCarving::On) {
+    return {true, "on (shadow_aware_carving: true)"};
+  }
+  if (mode == ShadowCarving::Off) {
+    return {false, "off (shadow_aware_carving: false)"};
+  }
+  const double spread = headingSpreadDeg(frames);
+  std::ostringstream reason;
+  reason.precision(3);
+  const bool on = spread > kMultiAspectHeadingSpread_deg;
+  reason << (on ? "on" : "off") << " (auto: the views' headings span " << spread << " degrees, "
+         << (on ? "over " : "not over ") << kMultiAspectHeadingSpread_deg << ")";
+  return {on, reason.str()};
+}
+
+}  // namespace sonarcarve
