@@ -356,7 +356,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   const VisibilityLimit* limit = visibility.first_return_m != nullptr ? &visibility : nullptr;
   if (limit == nullptr && params_.shadow_aware) {
     const ShadowLimitSetup setup{half_elevation, params_.elevation_step_rad, frame.beam_aware,
-                                 frame.keep_level};
+                                 frame.keep_level, frame.dark_is_exact};
     shadow = shadowLimits(pixels, T_world_sonar, map_, geometry_, setup, pool_);
     own.first_return_m = &shadow;
     own.elevation_bins = shadowLimitBins(setup);

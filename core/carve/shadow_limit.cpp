@@ -69,7 +69,8 @@ std::vector<float> shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& 
             continue;  // no surface above the keep level could light this pixel from there
           }
           const Eigen::Vector3d voxel = ((origin + r * direction[k]) / voxel_size).array().floor();
-          if (map.value(voxel.cast<int>()) == 0.0f) {
+          const float value = map.value(voxel.cast<int>());
+          if (value == 0.0f || (value == VoxelMap::kUnknown && !setup.unknown_may_hide)) {
             continue;  // carved: empty water, whatever lit the pixel is elsewhere on the arc
           }
           limit[k] = static_cast<float>(r);

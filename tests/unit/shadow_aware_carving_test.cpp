@@ -40,10 +40,11 @@ class ShadowAwareCarving : public ::testing::Test {
   const Eigen::Vector3d target_{4.0, 0.0, 0.0};
   const double wall_range_m_ = 3.0;
 
-  std::unique_ptr<Carver> make(bool shadow_aware) {
+  std::unique_ptr<Carver> make(bool shadow_aware,
+                               CarveParams::DarkPixels dark = CarveParams::DarkPixels::Exact) {
     CarveParams params;
     params.beam_aware = true;
-    params.dark_pixels = CarveParams::DarkPixels::Exact;
+    params.dark_pixels = dark;
     params.keep_level = 0.01 * kBright;  // 20 dB under the bright returns
     params.shadow_aware = shadow_aware;
     params.region =
@@ -67,6 +68,15 @@ class ShadowAwareCarving : public ::testing::Test {
     const Eigen::Isometry3d T = levelSonar(Eigen::Vector3d::Zero(), 0.0);
     cv::Mat image = dark();
     image.at<float>(*sonar_.range().binOf(wall_range_m_), *sonar_.bearings().beamOf(0.0)) = kBright;
+    carver.integrate(image, T, ++stamp_);
+  }
+
+  // The wall's voxel on the target's ray (3 m north of the origin), seen lit from 3 m to its
+  // west, facing east; the target lies 18 degrees off that view's bearings, unseen.
+  void seeWallFromTheWest(Carver& carver) {
+    const Eigen::Isometry3d T = levelSonar({wall_range_m_, -3.0, 0.0}, 90.0);
+    cv::Mat image = dark();
+    image.at<float>(*sonar_.range().binOf(3.0), *sonar_.bearings().beamOf(0.0)) = kBright;
     carver.integrate(image, T, ++stamp_);
   }
 
@@ -116,6 +126,24 @@ TEST_F(ShadowAwareCarving, ALitPixelWhoseVoxelOnTheRayIsCarvedHidesNothingThere)
   ASSERT_EQ(aware->value(voxelOf(target_)), VoxelMap::kUnknown);
   seeWallFromTheSouth(*aware);
   EXPECT_EQ(aware->value(voxelOf(target_)), 0.0f);
+}
+
+TEST_F(ShadowAwareCarving, BehindADetectorOnlyAVoxelThatAViewKeptHides) {
+  // Behind a detector a lit pixel may be a false alarm: a wall no view has kept yet does not
+  // shadow, a wall that another view kept does.
+  const auto below = CarveParams::DarkPixels::BelowDetection;
+  const Eigen::Vector3i target = voxelOf(target_);
+  auto kept = make(true, below);
+  seeTargetFromTheWest(*kept);
+  seeWallFromTheWest(*kept);
+  ASSERT_GT(kept->value(voxelOf({wall_range_m_, 0.0, 0.0})), 0.0f);
+  seeWallFromTheSouth(*kept);
+  EXPECT_NEAR(kept->value(target), kBright, 0.01 * kBright);
+
+  auto unseen = make(true, below);
+  seeTargetFromTheWest(*unseen);
+  seeWallFromTheSouth(*unseen);
+  EXPECT_EQ(unseen->value(target), 0.0f);
 }
 
 }  // namespace
