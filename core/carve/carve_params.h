@@ -50,8 +50,9 @@ struct CarveParams {
   int carve_votes = 1;
   /// Shadow-aware carving (fast engine): a frame carves a voxel only if no pixel nearer on
   /// the voxel's own ray (beam and elevation) may hold a surface that hides it (lit, bounding
-  /// a return above the keep level there, on a voxel not carved; carve/shadow_limit.h). Off:
-  /// the seed paper's rule, where a structure's shadow carves whatever lies in it.
+  /// a return above the keep level there, on a voxel not carved, and behind a detector kept
+  /// by some view; carve/shadow_limit.h). Off: the seed paper's rule, where a structure's
+  /// shadow carves whatever lies in it. A run sets it (pipeline/shadow_carving.h).
   bool shadow_aware = false;
 };
 

@@ -36,9 +36,9 @@ struct ShadowLimitSetup {
 /// For each ray (beam b, elevation bin k; index b * bins + k, bin k centred at
 /// -half + (k + 0.5) step): the range of the nearest of its pixels that may hold a surface, or
 /// +inf. A pixel may hold one at an elevation where it is lit (after the threshold), bounds a
-/// return above the keep level there (beam-aware) and its voxel is not carved in `map`
-/// (unknown voxels may be surfaces where `unknown_may_hide`). The carving kernel leaves what lies
-/// behind (VisibilityLimit). `pixels` is the thresholded CV_32F frame; `map`'s pages in the frame's
+/// return above the keep level there (beam-aware) and its voxel is not carved in `map` (nor,
+/// unless `unknown_may_hide`, unknown). The carving kernel leaves what lies behind
+/// (VisibilityLimit). `pixels` is the thresholded CV_32F frame; `map`'s pages in the frame's
 /// frustum must be held.
 std::vector<float> shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
                                 const VoxelMap& map, const CarvingGeometry& geometry,
