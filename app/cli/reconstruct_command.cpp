@@ -123,12 +123,8 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   TerminalProgress progress;
   const ReconstructionResult result = pipeline.run(progress);
   progress.finish();
-  std::cerr << "denoising: " << result.detector << ", " << result.denoising << "\n";
-  if (!result.shadow_carving.empty()) {
-    std::cerr << "shadow-aware carving: " << result.shadow_carving << "\n";
-  }
-  if (result.keep_level.frames > 0) {
-    std::cerr << describeKeepLevel(result.keep_level, params.carve.dynamic_range_db) << "\n";
+  for (const std::string& line : describeRunChoices(result, params.carve.dynamic_range_db)) {
+    std::cerr << line << "\n";
   }
   if (!result.temporary_file_problem.empty()) {
     std::cerr << "warning: " << result.temporary_file_problem

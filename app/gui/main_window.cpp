@@ -49,6 +49,7 @@
 #include "mesh/mesh_export.h"
 #include "occlusion/surface_points.h"
 #include "params_panel.h"
+#include "pipeline/report.h"
 #include "run_history_panel.h"
 #include "track_view.h"
 
@@ -425,51 +426,44 @@ void MainWindow::wireRunner() {
           [this](int, qulonglong index) { latest_carved_frame_ = static_cast<long>(index); });
   connect(runner_.get(), &ReconstructionRunner::frameSkipped, this,
           [this](int, const QString& message) { log(tr("skipped: %1").arg(message)); });
-  connect(
-      runner_.get(), &ReconstructionRunner::finished, this,
-      [this](int, std::shared_ptr<const ReconstructionResult> result,
-             std::shared_ptr<widgets::MapView::PreparedResult> view,
-             std::shared_ptr<const std::vector<Eigen::Vector3f>> surface_points) {
-        result_ = result;
-        follow_timer_.stop();
-        map_view_->setCaption({});
-        map_view_->setLive(false);
-        map_view_->flush();
-        map_view_->setResult(std::move(*view));  // built on the worker
-        if (!result->surface.empty()) {
-          layer_->setCurrentIndex(preferred_layer_);  // the surface, or the user's choice
-          if (!view_settled_) {
-            map_view_->fitCamera();
-          }
-        }
-        view_settled_ = true;
-        progress_bar_->setFormat(tr("done"));
-        const QString summary =
-            tr("done: %1 frames, %2 occupied voxels, %3 surface points, %4 mesh triangles, "
-               "%5 s (carving %6 ms/frame)")
-                .arg(result->frames_used)
-                .arg(result->occupied_voxels)
-                .arg(result->surface.size())
-                .arg(result->mesh.triangles.size())
-                .arg(result->total_s, 0, 'f', 1)
-                .arg(result->carve_ms_median, 0, 'f', 1);
-        log(tr("denoising: %1, %2")
-                .arg(QString::fromStdString(result->detector),
-                     QString::fromStdString(result->denoising)));
-        if (!result->shadow_carving.empty()) {
-          log(tr("shadow-aware carving: %1").arg(QString::fromStdString(result->shadow_carving)));
-        }
-        if (result->keep_level.frames > 0) {
-          log(QString::fromStdString(
-              describeKeepLevel(result->keep_level, run_params_.carve.dynamic_range_db)));
-        }
-        log(summary);
-        progress_label_->setText(summary);
-        updateRunActions();
-        recordRun(*result);
-        measureAccuracy(std::move(surface_points));
-        emit runFinished(result);
-      });
+  connect(runner_.get(), &ReconstructionRunner::finished, this,
+          [this](int, std::shared_ptr<const ReconstructionResult> result,
+                 std::shared_ptr<widgets::MapView::PreparedResult> view,
+                 std::shared_ptr<const std::vector<Eigen::Vector3f>> surface_points) {
+            result_ = result;
+            follow_timer_.stop();
+            map_view_->setCaption({});
+            map_view_->setLive(false);
+            map_view_->flush();
+            map_view_->setResult(std::move(*view));  // built on the worker
+            if (!result->surface.empty()) {
+              layer_->setCurrentIndex(preferred_layer_);  // the surface, or the user's choice
+              if (!view_settled_) {
+                map_view_->fitCamera();
+              }
+            }
+            view_settled_ = true;
+            progress_bar_->setFormat(tr("done"));
+            const QString summary =
+                tr("done: %1 frames, %2 occupied voxels, %3 surface points, %4 mesh triangles, "
+                   "%5 s (carving %6 ms/frame)")
+                    .arg(result->frames_used)
+                    .arg(result->occupied_voxels)
+                    .arg(result->surface.size())
+                    .arg(result->mesh.triangles.size())
+                    .arg(result->total_s, 0, 'f', 1)
+                    .arg(result->carve_ms_median, 0, 'f', 1);
+            for (const std::string& line :
+                 describeRunChoices(*result, run_params_.carve.dynamic_range_db)) {
+              log(QString::fromStdString(line));
+            }
+            log(summary);
+            progress_label_->setText(summary);
+            updateRunActions();
+            recordRun(*result);
+            measureAccuracy(std::move(surface_points));
+            emit runFinished(result);
+          });
   connect(runner_.get(), &ReconstructionRunner::failed, this, [this](int, const QString& message) {
     follow_timer_.stop();
     map_view_->setLive(false);

@@ -352,15 +352,15 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
 
   // What the frame sees: the visibility given, else, shadow-aware, its own shadow limits.
   VisibilityLimit own;
-  std::vector<float> shadow;
+  ShadowLimits shadow;
   const VisibilityLimit* limit = visibility.first_return_m != nullptr ? &visibility : nullptr;
   if (limit == nullptr && params_.shadow_aware) {
     const ShadowLimitSetup setup{half_elevation, params_.elevation_step_rad, frame.beam_aware,
                                  frame.keep_level, frame.dark_is_exact};
     shadow = shadowLimits(pixels, T_world_sonar, map_, geometry_, setup, pool_);
-    own.first_return_m = &shadow;
-    own.elevation_bins = shadowLimitBins(setup);
-    own.elevation_step_rad = 2.0 * half_elevation / own.elevation_bins;
+    own.first_return_m = &shadow.first_return_m;
+    own.elevation_bins = shadow.elevation_bins;
+    own.elevation_step_rad = shadow.elevation_step_rad;
     own.half_elevation_rad = half_elevation;
     // The voxel that holds the surface and the pixel's range bin stay observed (the margin of
     // occlusion-aware carving; half of it, the voxel alone, kept ghosts: orbit F 0.659

@@ -6,21 +6,21 @@
 
 namespace sonarcarve {
 
-int shadowLimitBins(const ShadowLimitSetup& setup) {
-  return std::max(
-      1, static_cast<int>(std::ceil(2.0 * setup.half_elevation_rad / setup.elevation_step_rad)));
-}
-
-std::vector<float> shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
-                                const VoxelMap& map, const CarvingGeometry& geometry,
-                                const ShadowLimitSetup& setup, ThreadPool& pool) {
+ShadowLimits shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
+                          const VoxelMap& map, const CarvingGeometry& geometry,
+                          const ShadowLimitSetup& setup, ThreadPool& pool) {
   const SonarModel& sonar = geometry.sonar();
-  const int bins = shadowLimitBins(setup);
+  const int bins = std::max(
+      1, static_cast<int>(std::ceil(2.0 * setup.half_elevation_rad / setup.elevation_step_rad)));
   const int beams = sonar.cols();
   const double step = 2.0 * setup.half_elevation_rad / bins;
   const double aperture_half = 0.5 * sonar.verticalAperture();
-  std::vector<float> limits(static_cast<std::size_t>(beams) * static_cast<std::size_t>(bins),
-                            std::numeric_limits<float>::infinity());
+  ShadowLimits out;
+  out.elevation_bins = bins;
+  out.elevation_step_rad = step;
+  std::vector<float>& limits = out.first_return_m;
+  limits.assign(static_cast<std::size_t>(beams) * static_cast<std::size_t>(bins),
+                std::numeric_limits<float>::infinity());
   // Per bin: its elevation's cosine, sine and the beam's inverse gain there.
   std::vector<double> cos_el(static_cast<std::size_t>(bins)), sin_el(cos_el.size());
   std::vector<float> inverse_gain(cos_el.size(), 1.0f);
@@ -80,7 +80,7 @@ std::vector<float> shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& 
       }
     }
   });
-  return limits;
+  return out;
 }
 
 }  // namespace sonarcarve

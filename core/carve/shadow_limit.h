@@ -33,18 +33,23 @@ struct ShadowLimitSetup {
   bool unknown_may_hide = true;
 };
 
-/// For each ray (beam b, elevation bin k; index b * bins + k, bin k centred at
-/// -half + (k + 0.5) step): the range of the nearest of its pixels that may hold a surface, or
-/// +inf. A pixel may hold one at an elevation where it is lit (after the threshold), bounds a
+/// The rays of one frame and how far each sees.
+struct ShadowLimits {
+  /// Per ray (beam b, elevation bin k; index b * elevation_bins + k, bin k centred at
+  /// -half + (k + 0.5) step): the range of the nearest of its pixels that may hold a surface,
+  /// or +inf.
+  std::vector<float> first_return_m;
+  int elevation_bins = 1;
+  double elevation_step_rad = 0.0;  ///< 2 half / elevation_bins: at most setup's step
+};
+
+/// A pixel may hold a surface at an elevation where it is lit (after the threshold), bounds a
 /// return above the keep level there (beam-aware) and its voxel is not carved in `map` (nor,
 /// unless `unknown_may_hide`, unknown). The carving kernel leaves what lies behind
 /// (VisibilityLimit). `pixels` is the thresholded CV_32F frame; `map`'s pages in the frame's
 /// frustum must be held.
-std::vector<float> shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
-                                const VoxelMap& map, const CarvingGeometry& geometry,
-                                const ShadowLimitSetup& setup, ThreadPool& pool);
-
-/// Number of elevation bins of the rays for `setup`.
-int shadowLimitBins(const ShadowLimitSetup& setup);
+ShadowLimits shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
+                          const VoxelMap& map, const CarvingGeometry& geometry,
+                          const ShadowLimitSetup& setup, ThreadPool& pool);
 
 }  // namespace sonarcarve

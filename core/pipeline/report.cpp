@@ -6,6 +6,7 @@
 #include "eval/evaluator.h"
 #include "geometry/scene_io.h"
 #include "io/frame_source.h"
+#include "pipeline/keep_level.h"
 #include "pipeline/refined_track.h"
 
 namespace sonarcarve {
@@ -71,6 +72,18 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
     }
   }
   return report.dump(2) + "\n";
+}
+
+std::vector<std::string> describeRunChoices(const ReconstructionResult& result,
+                                            double dynamic_range_db) {
+  std::vector<std::string> lines{"denoising: " + result.detector + ", " + result.denoising};
+  if (!result.shadow_carving.empty()) {
+    lines.push_back("shadow-aware carving: " + result.shadow_carving);
+  }
+  if (result.keep_level.frames > 0) {
+    lines.push_back(describeKeepLevel(result.keep_level, dynamic_range_db));
+  }
+  return lines;
 }
 
 }  // namespace sonarcarve

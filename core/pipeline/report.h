@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "pipeline/reconstruction.h"
 
@@ -13,5 +14,10 @@ namespace sonarcarve {
 /// The report as indented JSON text; the evaluation runs on `pool`.
 std::string reconstructionReport(const Mission& mission, const ReconstructionParams& params,
                                  const ReconstructionResult& result, ThreadPool& pool);
+
+/// What the run chose and why, a line each, for the terminal and the workbench's log: the
+/// denoising, shadow-aware carving (fast engine) and the keep level (beam-aware carving).
+std::vector<std::string> describeRunChoices(const ReconstructionResult& result,
+                                            double dynamic_range_db);
 
 }  // namespace sonarcarve
