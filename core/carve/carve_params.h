@@ -54,6 +54,12 @@ struct CarveParams {
   /// by some view; carve/shadow_limit.h). Off: the seed paper's rule, where a structure's
   /// shadow carves whatever lies in it. A run sets it (pipeline/shadow_carving.h).
   bool shadow_aware = false;
+  /// Seabed-aware carving (fast engine, beam-aware): each frame fits a plane to the seabed it
+  /// images through the whole beam pattern (carve/seabed_model.h) and, where one explains it,
+  /// bounds the other voxels on each arc by what the seabed leaves of the pixel, keeps the
+  /// seabed's band where the pixel is lit and leaves what lies under it. Off: a flat seabed
+  /// fills the main lobe at every range and the water over it is never carved.
+  bool seabed_aware = true;
 };
 
 /// An image of whole counts holds under half a count where it reads 0.

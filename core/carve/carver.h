@@ -48,6 +48,7 @@ struct VisibilityLimit {
 struct CarverStats {
   std::size_t occupied_voxels = 0;
   std::size_t memory_bytes = 0;
+  std::size_t seabed_frames = 0;  ///< seabed-aware carving: frames a seabed explained
 };
 
 class Carver {

@@ -7,7 +7,9 @@
 #include <cstring>
 #include <limits>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
+#include "carve/seabed_model.h"
 #include "carve/shadow_limit.h"
 #include "common/error.h"
 #include "sonar/beam_pattern.h"
@@ -30,6 +32,12 @@ struct FrameView {
   float limit_half_elevation = 0.0f;  // bin 0 starts this far under the axis
   float inv_elevation_step = 0.0f;
   float margin = 0.0f;
+  // Seabed-aware carving (same rays as first_return, which ends past the seabed): per pixel
+  // what the seabed explains, per ray where the seabed's band starts. A voxel in front of it
+  // is bounded by what the seabed leaves of its pixel; a voxel in the band by the whole pixel,
+  // and kept by a lit one.
+  const float* explained = nullptr;
+  const float* seabed_from = nullptr;
   // Beam-aware carving (CarveParams::beam_aware).
   bool beam_aware = false;
   bool dark_is_exact = false;
@@ -43,6 +51,13 @@ struct FrameView {
 };
 
 constexpr float kDarkPixelLevel = static_cast<float>(kDarkPixelCounts);
+
+// Seabed-aware carving: a pixel may hold up to this many times the seabed's fitted prediction
+// within this many range bins of it and still be the seabed's alone. The bins take the fit's
+// error in range (a few millimetres of depth, a tenth of a degree of slope: under a bin at 10 m),
+// the factor the spread of the prediction's scale over the frame (its median ratio).
+constexpr int kSeabedSlackBins = 2;
+constexpr double kSeabedHeadroom = 1.5;
 
 // Beam-aware: how far off the axis this frame can carve. A pixel carves a voxel where its bound
 // I / p(theta) is at or below the keep level, so nowhere p(theta) is under the faintest
@@ -223,16 +238,26 @@ BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
         if (row < 0 || row >= f.rows) {
           continue;
         }
+        float intensity = f.pixels[row * f.cols + beam];
+        bool on_seabed = false;
         if (f.first_return != nullptr) {
           const int bin =
               std::clamp(static_cast<int>((smallAsin(-p.z() / r) + f.limit_half_elevation) *
                                           f.inv_elevation_step),
                          0, f.elevation_bins - 1);
-          if (r > f.first_return[beam * f.elevation_bins + bin] + f.margin) {
+          const int ray = beam * f.elevation_bins + bin;
+          if (r > f.first_return[ray] + f.margin) {
             continue;  // hidden behind the first surface: not observed by this frame
           }
+          if (f.seabed_from != nullptr) {
+            on_seabed = r >= f.seabed_from[ray];
+            if (!on_seabed) {
+              intensity = std::max(0.0f, intensity - f.explained[row * f.cols + beam]);
+            } else if (!(intensity > 0.0f)) {
+              continue;
+            }
+          }
         }
-        const float intensity = f.pixels[row * f.cols + beam];
         if (f.beam_aware) {
           // What a return here would give on the beam's axis, at most: a lit pixel's
           // intensity, or what a dark one may hide, over the beam's gain at this elevation.
@@ -246,6 +271,10 @@ BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
             }
           } else if (!in_aperture) {
             continue;  // below detection, where the beam is weaker than -3 dB: no bound
+          }
+          if (on_seabed) {
+            // The fit says the seabed returns here, faint as it may be at grazing incidence.
+            bound = std::max(bound, std::nextafter(f.keep_level, 1e30f));
           }
           if (bound <= f.keep_level) {
             bound = 0.0f;
@@ -343,6 +372,19 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   const double cos_half = std::cos(half_elevation);
   frame.sin2_carved = static_cast<float>(sin_half * sin_half);
 
+  // Seabed-aware: the frame's seabed, what it explains of the pixels, and the rest.
+  std::optional<SeabedPlane> seabed;
+  cv::Mat explained, unexplained;
+  if (params_.seabed_aware && frame.beam_aware) {
+    seabed = seabed_.track(pixels, T_world_sonar, sonar);
+  }
+  if (seabed) {
+    explained = explainSeabed(pixels, predictSeabedImage(*seabed, T_world_sonar, sonar),
+                              kSeabedSlackBins, kSeabedHeadroom)
+                    .explained;
+    unexplained = pixels - explained;
+  }
+
   // Blocks of the map inside the frustum's bounding box.
   Eigen::Vector3i lo, hi;
   if (!map_.blockSpan(geometry_.frustumBounds(T_world_sonar, half_elevation), lo, hi)) {
@@ -357,7 +399,8 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   if (limit == nullptr && params_.shadow_aware) {
     const ShadowLimitSetup setup{half_elevation, params_.elevation_step_rad, frame.beam_aware,
                                  frame.keep_level, frame.dark_is_exact};
-    shadow = shadowLimits(pixels, T_world_sonar, map_, geometry_, setup, pool_);
+    shadow =
+        shadowLimits(seabed ? unexplained : pixels, T_world_sonar, map_, geometry_, setup, pool_);
     own.first_return_m = &shadow.first_return_m;
     own.elevation_bins = shadow.elevation_bins;
     own.elevation_step_rad = shadow.elevation_step_rad;
@@ -368,6 +411,35 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
     own.margin_m = std::sqrt(3.0) * map_.voxelSize() + sonar.range().resolution_m;
     limit = &own;
   }
+  // Seabed-aware: the rays' seabed bands, the seabed's limit folded into the visibility.
+  SeabedBands seabed_bands;
+  std::vector<float> with_seabed_limits;
+  VisibilityLimit with_seabed;
+  if (seabed) {
+    with_seabed = limit != nullptr ? *limit : VisibilityLimit{};
+    if (limit == nullptr) {
+      with_seabed.elevation_bins = std::max(
+          1, static_cast<int>(std::ceil(2.0 * half_elevation / params_.elevation_step_rad)));
+      with_seabed.elevation_step_rad = 2.0 * half_elevation / with_seabed.elevation_bins;
+      with_seabed.half_elevation_rad = half_elevation;
+      with_seabed.margin_m = std::sqrt(3.0) * map_.voxelSize() + sonar.range().resolution_m;
+    }
+    const double limit_half = with_seabed.half_elevation_rad > 0.0 ? with_seabed.half_elevation_rad
+                                                                   : 0.5 * sonar.verticalAperture();
+    seabed_bands = seabedBands(*seabed, T_world_sonar, sonar, with_seabed.elevation_bins,
+                               limit_half, with_seabed.elevation_step_rad, map_.voxelSize());
+    with_seabed_limits =
+        limit != nullptr
+            ? *limit->first_return_m
+            : std::vector<float>(seabed_bands.to.size(), std::numeric_limits<float>::infinity());
+    // What lies under the seabed is hidden from the frame.
+    for (std::size_t i = 0; i < with_seabed_limits.size(); ++i) {
+      with_seabed_limits[i] = std::min(
+          with_seabed_limits[i], seabed_bands.to[i] - static_cast<float>(with_seabed.margin_m));
+    }
+    with_seabed.first_return_m = &with_seabed_limits;
+    limit = &with_seabed;
+  }
   if (limit != nullptr) {
     frame.first_return = limit->first_return_m->data();
     frame.elevation_bins = limit->elevation_bins;
@@ -376,6 +448,10 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
                                                            : 0.5 * sonar.verticalAperture());
     frame.inv_elevation_step = static_cast<float>(1.0 / limit->elevation_step_rad);
     frame.margin = static_cast<float>(limit->margin_m);
+    if (seabed) {
+      frame.explained = explained.ptr<float>(0);
+      frame.seabed_from = seabed_bands.from.data();
+    }
   }
   const double block = map_.blockSize();
   const Eigen::Vector3i span = hi - lo + Eigen::Vector3i::Ones();

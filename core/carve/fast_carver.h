@@ -7,6 +7,8 @@
 // the pool's threads. integrate() must not run concurrently with itself on one map.
 #pragma once
 
+#include <optional>
+
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "carve/carve_params.h"
 #include "carve/carver.h"
 #include "carve/carving_geometry.h"
+#include "carve/seabed_model.h"
 #include "carve/voxel_map.h"
 #include "common/thread_pool.h"
 
@@ -33,12 +36,15 @@ class FastCarver {
   /// `stamp` (use the frame number + 1).
   IntegrateStats integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar,
                            std::uint32_t stamp, const VisibilityLimit& visibility = {});
+  /// Seabed-aware carving: the frames a seabed explained so far.
+  std::size_t seabedFrames() const { return seabed_.framesFound(); }
 
  private:
   VoxelMap& map_;
   CarveParams params_;
   CarvingGeometry geometry_;
   ThreadPool& pool_;
+  SeabedTracker seabed_;
 };
 
 }  // namespace sonarcarve

@@ -23,7 +23,9 @@ class FastEngine final : public Carver {
   void forEachSurfaceCandidate(const VoxelVisitor& visit) const override {
     map_.forEachOccupiedOnShell(visit);
   }
-  CarverStats stats() const override { return {map_.occupiedCount(), map_.memoryBytes()}; }
+  CarverStats stats() const override {
+    return {map_.occupiedCount(), map_.memoryBytes(), carver_.seabedFrames()};
+  }
   std::size_t memoryBytes() const override { return map_.memoryBytes(); }
   const VoxelMap* blockMap() const override { return &map_; }
   VoxelMap* evictableMap() override { return &map_; }

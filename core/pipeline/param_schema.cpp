@@ -213,6 +213,15 @@ std::vector<ParamSpec> makeSchema() {
        .gui = {.group = "Carving", .label = "Shadow-aware carving", .advanced = true},
        .access = field([](auto& p) -> auto& { return p.shadow_aware_carving; }),
        .applies = usesFastEngine},
+      {.key = "seabed_aware_carving",
+       .help = "fast engine, beam-aware: each frame fits the seabed it images and carves the "
+               "water over it by what the seabed leaves of each pixel; false: the water "
+               "within about a quarter of the sonar's height over a flat seabed is never "
+               "carved",
+       .flag = "--seabed-aware-carving",
+       .gui = {.group = "Carving", .label = "Seabed-aware carving", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.carve.seabed_aware; }),
+       .applies = usesFastEngine},
       {.key = "voxel_size_m",
        .unit = "m",
        .range = kPositive,

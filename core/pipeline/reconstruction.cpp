@@ -19,6 +19,22 @@
 namespace sonarcarve {
 namespace {
 
+// Seabed-aware carving in words: off and why, or in how many frames a seabed explained.
+std::string describeSeabedCarving(const ReconstructionParams& params, bool beam_aware,
+                                  std::size_t seabed_frames, std::size_t frames) {
+  if (params.engine != Engine::Fast) {
+    return "off (the reference engine)";
+  }
+  if (!params.carve.seabed_aware) {
+    return "off (seabed_aware_carving: false)";
+  }
+  if (!beam_aware) {
+    return "off (it needs beam-aware carving on a sinc^2 beam)";
+  }
+  return "on, a seabed explained " + std::to_string(seabed_frames) + " of " +
+         std::to_string(frames) + " frames";
+}
+
 FrameSelection selectionOf(const ReconstructionParams& params) {
   return {params.first_frame, params.last_frame, params.stride};
 }
@@ -179,6 +195,9 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     throw Error(mission_.folder.string(), "", "every selected frame failed to load");
   }
   result.carver = std::move(carved.carver);
+  result.seabed_carving =
+      describeSeabedCarving(params_, carvesMainLobe(sonar_, stage.carve),
+                            result.carver->stats().seabed_frames, carved.used.size());
   std::sort(carved.carve_ms.begin(), carved.carve_ms.end());
   result.carve_ms_median =
       carved.carve_ms.empty() ? 0.0 : carved.carve_ms[carved.carve_ms.size() / 2];

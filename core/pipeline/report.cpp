@@ -18,6 +18,7 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                            {"detector", result.detector},
                            {"denoising", result.denoising},
                            {"shadow_aware_carving", result.shadow_carving},
+                           {"seabed_aware_carving", result.seabed_carving},
                            {"smoothing", params.detector.smoothing},
                            {"z", params.detector.z},
                            {"frames_used", result.frames_used},
@@ -79,6 +80,9 @@ std::vector<std::string> describeRunChoices(const ReconstructionResult& result,
   std::vector<std::string> lines{"denoising: " + result.detector + ", " + result.denoising};
   if (!result.shadow_carving.empty()) {
     lines.push_back("shadow-aware carving: " + result.shadow_carving);
+  }
+  if (!result.seabed_carving.empty()) {
+    lines.push_back("seabed-aware carving: " + result.seabed_carving);
   }
   if (result.keep_level.frames > 0) {
     lines.push_back(describeKeepLevel(result.keep_level, dynamic_range_db));

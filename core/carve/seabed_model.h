@@ -1,0 +1,104 @@
+// Seabed explanation: what a flat seabed puts into a frame through the whole elevation beam,
+// so that the water over it can be carved.
+//
+// A flat seabed fills the beam's main lobe at every range it spans, so every voxel of water
+// within about a quarter of the sonar's height above it shares a lit pixel with it in every
+// view: no rule on a voxel's own bound can carve it (docs/validation.md, "A seabed survey").
+// Given the seabed's plane, the frame's image of it is predicted from the beam pattern and
+// Lambert's law, scaled to the frame, and taken out of the pixels: what is left bounds the
+// other voxels on each arc. The seabed itself (and what lies under it) is left to the views,
+// through a visibility limit along each ray.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
+
+#include "sonar/sonar_model.h"
+
+namespace sonarcarve {
+
+/// A plane of the seabed, world NED: points x with normal.dot(x) = offset, normal pointing up
+/// into the water (its z negative).
+struct SeabedPlane {
+  Eigen::Vector3d normal{0.0, 0.0, -1.0};
+  double offset = -20.0;
+  static SeabedPlane level(double depth_m) { return {Eigen::Vector3d(0, 0, -1), -depth_m}; }
+  /// depth = depth_m + slope_north (north - at.x) + slope_east (east - at.y).
+  static SeabedPlane sloped(const Eigen::Vector3d& at, double depth_m, double slope_north,
+                            double slope_east);
+  /// Its depth under a horizontal position (north, east).
+  double depthAt(double north, double east) const;
+};
+
+/// The seabed's image in one frame, up to a scale: per pixel, the sum over elevation of the
+/// beam's power, the ray's solid angle and cos(incidence) for the rays that meet the plane in
+/// that pixel's range bin and beam. CV_32F, the sonar's rows x cols.
+cv::Mat predictSeabedImage(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
+                           const SonarModel& sonar);
+
+/// The range along a ray (sonar frame, unit `direction`) at which it meets the plane, or +inf.
+double seabedRange(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
+                   const Eigen::Vector3d& direction_sonar);
+
+/// The plane that best explains a frame and how well: the normalised correlation of the
+/// frame's pixels (clipped at a high percentile, so that bright structure does not pull the
+/// plane) with the plane's predicted image, over every fourth beam.
+struct SeabedFit {
+  SeabedPlane plane;
+  double correlation = 0.0;  ///< in [0, 1]; 0: no plane meets the beam in range
+};
+
+/// Fits a plane to one frame: from `prior` (the previous frame's plane) by a pattern search of
+/// its depth and slopes, or with no prior by a scan of level planes under the sonar first.
+SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
+                    const SonarModel& sonar, const SeabedFit* prior);
+
+struct SeabedExplanation {
+  cv::Mat explained;   ///< what the seabed explains of each pixel (<= the pixel)
+  double scale = 0.0;  ///< counts per unit of the predicted image
+};
+
+/// What of `pixels` the seabed's predicted image explains, scaled by the median ratio of lit
+/// pixels to it where it is strong. Each pixel may hold up to `headroom` times the largest
+/// prediction within `slack_bins` range bins of it (the fit's error in range).
+SeabedExplanation explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack_bins,
+                                double headroom);
+
+/// Where the seabed lies along a frame's rays: for ray (beam b, elevation bin k of `bins`,
+/// bin k centred at -half + (k + 0.5) step; index b * bins + k), the ranges between which a
+/// voxel may hold the seabed (`voxel_size` either side of the plane along the ray), +inf
+/// where the ray misses it.
+struct SeabedBands {
+  std::vector<float> from;
+  std::vector<float> to;
+};
+SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
+                        const SonarModel& sonar, int bins, double half, double step,
+                        double voxel_size);
+
+/// Follows the seabed from frame to frame: each frame's plane is fitted from the last one's,
+/// or, while none is found, scanned for afresh every few frames.
+class SeabedTracker {
+ public:
+  /// A plane explains a frame where its prediction correlates with the pixels this well: a
+  /// noise-free seabed gives 0.92 to 0.99 over the manifold's survey (its objects and their
+  /// shadows are what it misses), a frame with no seabed in view under 0.3.
+  static constexpr double kMinCorrelation = 0.8;
+  /// While no seabed is found, every this many frames are scanned for one.
+  static constexpr int kScanEvery = 8;
+
+  /// This frame's seabed, if one explains it.
+  std::optional<SeabedPlane> track(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
+                                   const SonarModel& sonar);
+  /// Frames a seabed explained so far.
+  std::size_t framesFound() const { return found_; }
+
+ private:
+  std::optional<SeabedFit> last_;
+  int since_scan_ = 0;
+  std::size_t found_ = 0;
+};
+
+}  // namespace sonarcarve
