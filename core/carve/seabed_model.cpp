@@ -144,6 +144,8 @@ constexpr double kPredictionStep_rad = 0.1 * std::numbers::pi / 180.0;
 constexpr double kFitStep_rad = 0.2 * std::numbers::pi / 180.0;
 constexpr int kFitBeamStride = 4;
 constexpr int kRefits = 2;
+constexpr double kMaxDepthStep_m = 0.02;
+constexpr double kMaxSlopeStep = 0.002;  // 0.11 degree
 constexpr double kOutlierFactor = 1.5;
 
 }  // namespace
@@ -283,11 +285,16 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
     return correlation(data, rays, plane(p), at, sonar.range());
   };
   FitParams best{at.z() + 1.0, 0.0, 0.0};
+  // From a prior, the plane moves at most kMaxDepthStep_m and kMaxSlopeStep a frame: the
+  // seabed is one surface, and what pulls a fit further is structure coming into view.
+  FitParams start = best;
+  bool bounded = false;
   if (prior != nullptr && prior->correlation > 0.0) {
     const SeabedPlane& pq = prior->plane;
     best = {pq.depthAt(at.x(), at.y()), pq.normal.x() / -pq.normal.z(),
             pq.normal.y() / -pq.normal.z()};
-    patternSearch(best, 0.02, 0.004, score);
+    start = best;
+    bounded = true;
   } else {
     // A scan of level planes with a coarse ray set (every 16th beam, 0.5 degree intervals).
     const BeamRays coarse =
@@ -324,7 +331,14 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
         data.at<float>(r, static_cast<int>(i)) = outlier ? -1.0f : static_cast<float>(v);
       }
     }
-    fit = patternSearch(best, 0.01, 0.002, score);
+    fit = patternSearch(best, 0.01, 0.002, [&](const FitParams& p) {
+      if (bounded && (std::abs(p.depth - start.depth) > kMaxDepthStep_m ||
+                      std::abs(p.sn - start.sn) > kMaxSlopeStep ||
+                      std::abs(p.se - start.se) > kMaxSlopeStep)) {
+        return -1.0;
+      }
+      return score(p);
+    });
   }
   return {plane(best), fit};
 }
