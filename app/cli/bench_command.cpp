@@ -31,6 +31,7 @@ namespace {
 struct BenchOptions {
   std::string what = "simulate";
   bool region = false;
+  bool seabed_aware = CarveParams{}.seabed_aware;
   int reference_frames = 3;
   std::string scene = "riser";
   int frames = 40;
@@ -147,6 +148,7 @@ int benchCarve(const BenchOptions& o, ThreadPool& pool) {
   const SonarSimulator simulator(caster, sonar, imaging, pool);
   CarveParams params;
   params.dark_pixels = CarveParams::DarkPixels::Exact;  // noise-free frames
+  params.seabed_aware = o.seabed_aware;
   if (o.region) {
     // A 4 m x 4 m column around the structure's axis, as an analyst would draw it.
     const Eigen::Vector3d axis = scene.target.axis_point_m;
@@ -222,6 +224,7 @@ int benchCarve(const BenchOptions& o, ThreadPool& pool) {
       {"frames", carve.ms.size()},
       {"beam", o.beam},
       {"beam_aware", carvesMainLobe(sonar, params)},
+      {"seabed_aware", params.seabed_aware},
       {"threads", pool.size()},
       {"map_blocks", map.boxBlockCount()},
       {"fast_carve_median_ms", carve.median()},
@@ -278,6 +281,9 @@ void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   cmd->add_flag("--region", o->region, "carve: map a 4 m column around the structure only");
+  cmd->add_option("--seabed-aware-carving", o->seabed_aware,
+                  "carve: fit the seabed in each frame and carve the water over it")
+      ->capture_default_str();
   cmd->add_option("--reference-frames", o->reference_frames,
                   "carve: frames to time the reference engine on")
       ->capture_default_str();

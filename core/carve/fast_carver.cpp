@@ -376,10 +376,10 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   std::optional<SeabedPlane> seabed;
   cv::Mat explained, unexplained;
   if (params_.seabed_aware && frame.beam_aware) {
-    seabed = seabed_.track(pixels, T_world_sonar, sonar);
+    seabed = seabed_.track(pixels, T_world_sonar, sonar, &pool_);
   }
   if (seabed) {
-    explained = explainSeabed(pixels, predictSeabedImage(*seabed, T_world_sonar, sonar),
+    explained = explainSeabed(pixels, predictSeabedImage(*seabed, T_world_sonar, sonar, &pool_),
                               kSeabedSlackBins, kSeabedHeadroom)
                     .explained;
     unexplained = pixels - explained;

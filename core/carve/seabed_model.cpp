@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -38,6 +39,21 @@ double seabedRange(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_so
 
 namespace {
 
+// Runs fn(i) for i in [0, count), on `pool` where given.
+void forEachBeam(ThreadPool* pool, std::size_t count, const std::function<void(std::size_t)>& fn) {
+  if (pool == nullptr) {
+    for (std::size_t i = 0; i < count; ++i) {
+      fn(i);
+    }
+    return;
+  }
+  pool->parallelFor(count, 8, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      fn(i);
+    }
+  });
+}
+
 // The rays of some of a frame's beams, in the world, cut into elevation intervals over the
 // beam's traced pattern (to the second null): each interval's two ends and its centre, and
 // its weight (power x solid angle, cos(incidence) still to come).
@@ -49,7 +65,8 @@ struct BeamRays {
   std::vector<double> weights;           // per interval
 };
 
-BeamRays beamRays(const SonarModel& sonar, const Eigen::Matrix3d& R, int beam_stride, double step) {
+BeamRays beamRays(const SonarModel& sonar, const Eigen::Matrix3d& R, int beam_stride, double step,
+                  ThreadPool* pool) {
   BeamRays rays;
   const SincSquaredBeam beam(sonar.verticalAperture());
   const double reach = beam.null(2);
@@ -61,18 +78,23 @@ BeamRays beamRays(const SonarModel& sonar, const Eigen::Matrix3d& R, int beam_st
   }
   for (int b = 0; b < sonar.cols(); b += beam_stride) {
     rays.beams.push_back(b);
-    const double bearing = sonar.bearings().centre(b);
+  }
+  const auto n = static_cast<std::size_t>(rays.intervals);
+  rays.ends.resize(rays.beams.size() * (n + 1));
+  rays.centres.resize(rays.beams.size() * n);
+  forEachBeam(pool, rays.beams.size(), [&](std::size_t i) {
+    const double bearing = sonar.bearings().centre(rays.beams[i]);
     const double cb = std::cos(bearing), sb = std::sin(bearing);
     const auto direction = [&](double el) -> Eigen::Vector3d {
       return R * Eigen::Vector3d(std::cos(el) * cb, std::cos(el) * sb, -std::sin(el));
     };
-    for (int k = 0; k <= rays.intervals; ++k) {
-      rays.ends.push_back(direction(-reach + k * step));
+    for (std::size_t k = 0; k <= n; ++k) {
+      rays.ends[i * (n + 1) + k] = direction(-reach + static_cast<double>(k) * step);
     }
-    for (int k = 0; k < rays.intervals; ++k) {
-      rays.centres.push_back(direction(-reach + (k + 0.5) * step));
+    for (std::size_t k = 0; k < n; ++k) {
+      rays.centres[i * n + k] = direction(-reach + (static_cast<double>(k) + 0.5) * step);
     }
-  }
+  });
   return rays;
 }
 
@@ -123,24 +145,23 @@ void accumulateBeam(std::vector<float>& column, const BeamRays& rays, std::size_
 }
 
 cv::Mat predictedImage(const BeamRays& rays, const SeabedPlane& plane,
-                       const Eigen::Vector3d& position, const SonarModel& sonar) {
+                       const Eigen::Vector3d& position, const SonarModel& sonar, ThreadPool* pool) {
   cv::Mat image = cv::Mat::zeros(sonar.rows(), sonar.cols(), CV_32F);
   const double height = heightOver(plane, position);
   if (!(height > 0.0)) {
     return image;
   }
-  std::vector<float> column(static_cast<std::size_t>(sonar.rows()));
-  for (std::size_t i = 0; i < rays.beams.size(); ++i) {
-    std::fill(column.begin(), column.end(), 0.0f);
+  forEachBeam(pool, rays.beams.size(), [&](std::size_t i) {
+    std::vector<float> column(static_cast<std::size_t>(sonar.rows()), 0.0f);
     accumulateBeam(column, rays, i, plane, height, sonar.range());
     for (int r = 0; r < sonar.rows(); ++r) {
       image.at<float>(r, rays.beams[i]) = column[static_cast<std::size_t>(r)];
     }
-  }
+  });
   return image;
 }
 
-constexpr double kPredictionStep_rad = 0.1 * std::numbers::pi / 180.0;
+constexpr double kPredictionStep_rad = 0.2 * std::numbers::pi / 180.0;
 constexpr double kFitStep_rad = 0.2 * std::numbers::pi / 180.0;
 constexpr int kFitBeamStride = 4;
 constexpr int kRefits = 2;
@@ -151,9 +172,9 @@ constexpr double kOutlierFactor = 1.5;
 }  // namespace
 
 cv::Mat predictSeabedImage(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
-                           const SonarModel& sonar) {
-  const BeamRays rays = beamRays(sonar, T_world_sonar.linear(), 1, kPredictionStep_rad);
-  return predictedImage(rays, plane, T_world_sonar.translation(), sonar);
+                           const SonarModel& sonar, ThreadPool* pool) {
+  const BeamRays rays = beamRays(sonar, T_world_sonar.linear(), 1, kPredictionStep_rad, pool);
+  return predictedImage(rays, plane, T_world_sonar.translation(), sonar, pool);
 }
 
 namespace {
@@ -171,26 +192,34 @@ cv::Mat fitPixels(const cv::Mat& pixels, const BeamRays& rays) {
 
 // Normalised correlation of `data` (rows x fit beams) with a plane's predicted image.
 double correlation(const cv::Mat& data, const BeamRays& rays, const SeabedPlane& plane,
-                   const Eigen::Vector3d& position, const RangeBins& bins) {
+                   const Eigen::Vector3d& position, const RangeBins& bins, ThreadPool* pool) {
   const double height = heightOver(plane, position);
   if (!(height > 0.0)) {
     return 0.0;
   }
-  std::vector<float> column(static_cast<std::size_t>(data.rows));
-  double ie = 0.0, ee = 0.0, ii = 0.0;
-  for (std::size_t i = 0; i < rays.beams.size(); ++i) {
-    std::fill(column.begin(), column.end(), 0.0f);
+  // Per beam: the sums of pixel x prediction, prediction^2 and pixel^2 over the pixels fitted.
+  std::vector<std::array<double, 3>> sums(rays.beams.size());
+  forEachBeam(pool, rays.beams.size(), [&](std::size_t i) {
+    std::vector<float> column(static_cast<std::size_t>(data.rows), 0.0f);
     accumulateBeam(column, rays, i, plane, height, bins);
+    std::array<double, 3> s{0.0, 0.0, 0.0};
     for (int r = 0; r < data.rows; ++r) {
       const double e = column[static_cast<std::size_t>(r)];
       const double v = data.at<float>(r, static_cast<int>(i));
       if (v < 0.0) {
         continue;  // left out of the fit
       }
-      ie += v * e;
-      ee += e * e;
-      ii += v * v;
+      s[0] += v * e;
+      s[1] += e * e;
+      s[2] += v * v;
     }
+    sums[i] = s;
+  });
+  double ie = 0.0, ee = 0.0, ii = 0.0;
+  for (const auto& s : sums) {
+    ie += s[0];
+    ee += s[1];
+    ii += s[2];
   }
   if (!(ee > 0.0) || !(ii > 0.0)) {
     return 0.0;
@@ -254,11 +283,12 @@ double medianRatio(const cv::Mat& pixels, const cv::Mat& predicted, double floor
 }  // namespace
 
 SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
-                    const SonarModel& sonar, const SeabedFit* prior) {
-  const BeamRays rays = beamRays(sonar, T_world_sonar.linear(), kFitBeamStride, kFitStep_rad);
+                    const SonarModel& sonar, const SeabedFit* prior, ThreadPool* pool) {
+  const BeamRays rays = beamRays(sonar, T_world_sonar.linear(), kFitBeamStride, kFitStep_rad, pool);
   const cv::Mat raw = fitPixels(pixels, rays);
-  // First on pixels clipped at their 90th percentile, so that bright structure does not pull
-  // the plane; then on the unclipped pixels less those far above that plane's prediction.
+  // Without a prior, a first search runs on pixels clipped at their 90th percentile, so that
+  // bright structure does not pull the plane; then (from a prior, at once) the unclipped
+  // pixels less those the plane does not explain.
   cv::Mat data = raw.clone();
   std::vector<float> lit;
   for (int r = 0; r < raw.rows; ++r) {
@@ -282,7 +312,7 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
     return SeabedPlane::sloped(at, p.depth, p.sn, p.se);
   };
   const auto score = [&](const FitParams& p) {
-    return correlation(data, rays, plane(p), at, sonar.range());
+    return correlation(data, rays, plane(p), at, sonar.range(), pool);
   };
   FitParams best{at.z() + 1.0, 0.0, 0.0};
   // From a prior, the plane moves at most kMaxDepthStep_m and kMaxSlopeStep a frame: the
@@ -298,13 +328,13 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
   } else {
     // A scan of level planes with a coarse ray set (every 16th beam, 0.5 degree intervals).
     const BeamRays coarse =
-        beamRays(sonar, T_world_sonar.linear(), 4 * kFitBeamStride, 2.5 * kFitStep_rad);
+        beamRays(sonar, T_world_sonar.linear(), 4 * kFitBeamStride, 2.5 * kFitStep_rad, pool);
     cv::Mat coarse_data;
     cv::min(fitPixels(pixels, coarse), clip, coarse_data);
     double best_score = 0.0;
     for (double h = 0.3; h < sonar.range().maxRange(); h += 0.1) {
       const FitParams p{at.z() + h, 0.0, 0.0};
-      const double s = correlation(coarse_data, coarse, plane(p), at, sonar.range());
+      const double s = correlation(coarse_data, coarse, plane(p), at, sonar.range(), pool);
       if (s > best_score) {
         best_score = s;
         best = p;
@@ -321,7 +351,7 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
   // on the seabed pulled the plane 4 cm up as it came nearer; with them, under 1 cm.
   double fit = 0.0;
   for (int round = 0; round < kRefits; ++round) {
-    const cv::Mat predicted = predictedImage(rays, plane(best), at, sonar);
+    const cv::Mat predicted = predictedImage(rays, plane(best), at, sonar, pool);
     const double scale = medianRatio(pixels, predicted, 0.0);
     for (int r = 0; r < raw.rows; ++r) {
       for (std::size_t i = 0; i < rays.beams.size(); ++i) {
@@ -389,12 +419,12 @@ SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_wor
 
 std::optional<SeabedPlane> SeabedTracker::track(const cv::Mat& pixels,
                                                 const Eigen::Isometry3d& T_world_sonar,
-                                                const SonarModel& sonar) {
+                                                const SonarModel& sonar, ThreadPool* pool) {
   if (!last_ && since_scan_ > 0) {
     since_scan_ = (since_scan_ + 1) % kScanEvery;
     return std::nullopt;
   }
-  const SeabedFit fit = fitSeabed(pixels, T_world_sonar, sonar, last_ ? &*last_ : nullptr);
+  const SeabedFit fit = fitSeabed(pixels, T_world_sonar, sonar, last_ ? &*last_ : nullptr, pool);
   if (fit.correlation < kMinCorrelation) {
     last_.reset();
     since_scan_ = 1;

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/thread_pool.h"
 #include "sonar/sonar_model.h"
 
 namespace sonarcarve {
@@ -35,25 +36,28 @@ struct SeabedPlane {
 /// The seabed's image in one frame, up to a scale: per pixel, the sum over elevation of the
 /// beam's power, the ray's solid angle and cos(incidence) for the rays that meet the plane in
 /// that pixel's range bin and beam. CV_32F, the sonar's rows x cols.
+/// Its beams run on `pool` where given.
 cv::Mat predictSeabedImage(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
-                           const SonarModel& sonar);
+                           const SonarModel& sonar, ThreadPool* pool = nullptr);
 
 /// The range along a ray (sonar frame, unit `direction`) at which it meets the plane, or +inf.
 double seabedRange(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
                    const Eigen::Vector3d& direction_sonar);
 
 /// The plane that best explains a frame and how well: the normalised correlation of the
-/// frame's pixels (clipped at a high percentile, so that bright structure does not pull the
-/// plane) with the plane's predicted image, over every fourth beam.
+/// frame's pixels with the plane's predicted image, over every fourth beam, leaving out the
+/// pixels the plane does not explain (structure over 1.5 times its prediction, shadows under
+/// two thirds of it).
 struct SeabedFit {
   SeabedPlane plane;
   double correlation = 0.0;  ///< in [0, 1]; 0: no plane meets the beam in range
 };
 
 /// Fits a plane to one frame: from `prior` (the previous frame's plane) by a pattern search of
-/// its depth and slopes, or with no prior by a scan of level planes under the sonar first.
+/// its depth and slopes, moving at most 2 cm and 0.11 degree, or with no prior by a scan of
+/// level planes under the sonar first. Beams run on `pool` where given.
 SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
-                    const SonarModel& sonar, const SeabedFit* prior);
+                    const SonarModel& sonar, const SeabedFit* prior, ThreadPool* pool = nullptr);
 
 struct SeabedExplanation {
   cv::Mat explained;   ///< what the seabed explains of each pixel (<= the pixel)
@@ -91,7 +95,7 @@ class SeabedTracker {
 
   /// This frame's seabed, if one explains it.
   std::optional<SeabedPlane> track(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
-                                   const SonarModel& sonar);
+                                   const SonarModel& sonar, ThreadPool* pool = nullptr);
   /// Frames a seabed explained so far.
   std::size_t framesFound() const { return found_; }
 
