@@ -9,6 +9,8 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -43,6 +45,17 @@ struct VisibilityLimit {
   /// Bin 0 starts this far under the sonar's axis; 0: at the aperture's lower edge.
   double half_elevation_rad = 0.0;
 };
+
+/// Elevation bins of equal width, at most `max_step_rad`, over +-`half_elevation_rad`.
+inline int visibilityBins(double half_elevation_rad, double max_step_rad) {
+  return std::max(1, static_cast<int>(std::ceil(2.0 * half_elevation_rad / max_step_rad)));
+}
+
+/// The margin behind a surface that stays observed: its voxel (the half diagonal either way)
+/// and the pixel's range bin.
+inline double surfaceMargin(double voxel_size_m, double range_resolution_m) {
+  return std::sqrt(3.0) * voxel_size_m + range_resolution_m;
+}
 
 /// What an engine holds, for reports and memory budgets.
 struct CarverStats {

@@ -33,10 +33,10 @@ struct FrameView {
   float inv_elevation_step = 0.0f;
   float margin = 0.0f;
   // Seabed-aware carving (same rays as first_return, which ends past the seabed): per pixel
-  // what the seabed explains, per ray where the seabed's band starts. A voxel in front of it
-  // is bounded by what the seabed leaves of its pixel; a voxel in the band by the whole pixel,
-  // and kept by a lit one.
-  const float* explained = nullptr;
+  // what the seabed leaves of it, per ray where the seabed's band starts. A voxel in front of
+  // it is bounded by what the seabed leaves of its pixel; a voxel in the band by the whole
+  // pixel, and kept by a lit one.
+  const float* unexplained = nullptr;
   const float* seabed_from = nullptr;
   // Beam-aware carving (CarveParams::beam_aware).
   bool beam_aware = false;
@@ -252,7 +252,7 @@ BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
           if (f.seabed_from != nullptr) {
             on_seabed = r >= f.seabed_from[ray];
             if (!on_seabed) {
-              intensity = std::max(0.0f, intensity - f.explained[row * f.cols + beam]);
+              intensity = f.unexplained[row * f.cols + beam];
             } else if (!(intensity > 0.0f)) {
               continue;
             }
@@ -374,15 +374,13 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
 
   // Seabed-aware: the frame's seabed, what it explains of the pixels, and the rest.
   std::optional<SeabedPlane> seabed;
-  cv::Mat explained, unexplained;
+  cv::Mat unexplained;
   if (params_.seabed_aware && frame.beam_aware) {
     seabed = seabed_.track(pixels, T_world_sonar, sonar, &pool_);
   }
   if (seabed) {
-    explained = explainSeabed(pixels, predictSeabedImage(*seabed, T_world_sonar, sonar, &pool_),
-                              kSeabedSlackBins, kSeabedHeadroom)
-                    .explained;
-    unexplained = pixels - explained;
+    unexplained = explainSeabed(pixels, predictSeabedImage(*seabed, T_world_sonar, sonar, &pool_),
+                                kSeabedSlackBins, kSeabedHeadroom);
   }
 
   // Blocks of the map inside the frustum's bounding box.
@@ -408,7 +406,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
     // The voxel that holds the surface and the pixel's range bin stay observed (the margin of
     // occlusion-aware carving; half of it, the voxel alone, kept ghosts: orbit F 0.659
     // against 0.716).
-    own.margin_m = std::sqrt(3.0) * map_.voxelSize() + sonar.range().resolution_m;
+    own.margin_m = surfaceMargin(map_.voxelSize(), sonar.range().resolution_m);
     limit = &own;
   }
   // Seabed-aware: the rays' seabed bands, the seabed's limit folded into the visibility.
@@ -418,11 +416,10 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   if (seabed) {
     with_seabed = limit != nullptr ? *limit : VisibilityLimit{};
     if (limit == nullptr) {
-      with_seabed.elevation_bins = std::max(
-          1, static_cast<int>(std::ceil(2.0 * half_elevation / params_.elevation_step_rad)));
+      with_seabed.elevation_bins = visibilityBins(half_elevation, params_.elevation_step_rad);
       with_seabed.elevation_step_rad = 2.0 * half_elevation / with_seabed.elevation_bins;
       with_seabed.half_elevation_rad = half_elevation;
-      with_seabed.margin_m = std::sqrt(3.0) * map_.voxelSize() + sonar.range().resolution_m;
+      with_seabed.margin_m = surfaceMargin(map_.voxelSize(), sonar.range().resolution_m);
     }
     const double limit_half = with_seabed.half_elevation_rad > 0.0 ? with_seabed.half_elevation_rad
                                                                    : 0.5 * sonar.verticalAperture();
@@ -449,7 +446,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
     frame.inv_elevation_step = static_cast<float>(1.0 / limit->elevation_step_rad);
     frame.margin = static_cast<float>(limit->margin_m);
     if (seabed) {
-      frame.explained = explained.ptr<float>(0);
+      frame.unexplained = unexplained.ptr<float>(0);
       frame.seabed_from = seabed_bands.from.data();
     }
   }

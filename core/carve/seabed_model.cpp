@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "common/angles.h"
+#include "common/quantile.h"
 #include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
@@ -38,6 +39,13 @@ double seabedRange(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_so
 }
 
 namespace {
+
+// The unit ray of a beam at an elevation (up positive) in the sonar frame (x forward, y
+// starboard, z down).
+Eigen::Vector3d rayDirection(double elevation_rad, double bearing_rad) {
+  return {std::cos(elevation_rad) * std::cos(bearing_rad),
+          std::cos(elevation_rad) * std::sin(bearing_rad), -std::sin(elevation_rad)};
+}
 
 // Runs fn(i) for i in [0, count), on `pool` where given.
 void forEachBeam(ThreadPool* pool, std::size_t count, const std::function<void(std::size_t)>& fn) {
@@ -84,9 +92,8 @@ BeamRays beamRays(const SonarModel& sonar, const Eigen::Matrix3d& R, int beam_st
   rays.centres.resize(rays.beams.size() * n);
   forEachBeam(pool, rays.beams.size(), [&](std::size_t i) {
     const double bearing = sonar.bearings().centre(rays.beams[i]);
-    const double cb = std::cos(bearing), sb = std::sin(bearing);
     const auto direction = [&](double el) -> Eigen::Vector3d {
-      return R * Eigen::Vector3d(std::cos(el) * cb, std::cos(el) * sb, -std::sin(el));
+      return R * rayDirection(el, bearing);
     };
     for (std::size_t k = 0; k <= n; ++k) {
       rays.ends[i * (n + 1) + k] = direction(-reach + static_cast<double>(k) * step);
@@ -301,10 +308,7 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
   if (lit.empty()) {
     return {};
   }
-  const auto q =
-      lit.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(lit.size() - 1));
-  std::nth_element(lit.begin(), q, lit.end());
-  const float clip = *q;
+  const float clip = quantile(lit, 0.9);
   cv::min(data, clip, data);
 
   const Eigen::Vector3d at = T_world_sonar.translation();
@@ -373,18 +377,17 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
   return {plane(best), fit};
 }
 
-SeabedExplanation explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack_bins,
-                                double headroom) {
-  SeabedExplanation out;
-  out.explained = cv::Mat::zeros(pixels.size(), CV_32F);
-  out.scale = medianRatio(pixels, predicted, 0.1);
-  if (!(out.scale > 0.0)) {
-    return out;
+cv::Mat explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack_bins,
+                      double headroom) {
+  const double scale = medianRatio(pixels, predicted, 0.1);
+  if (!(scale > 0.0)) {
+    return pixels.clone();
   }
   cv::Mat spread;
   cv::dilate(predicted, spread, cv::Mat::ones(2 * slack_bins + 1, 1, CV_8U));
-  cv::min(pixels, spread * (headroom * out.scale), out.explained);
-  return out;
+  cv::Mat explained;
+  cv::min(pixels, spread * (headroom * scale), explained);
+  return pixels - explained;
 }
 
 SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
@@ -398,8 +401,7 @@ SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_wor
     const double bearing = sonar.bearings().centre(b);
     for (int k = 0; k < bins; ++k) {
       const double el = -half + (k + 0.5) * step;
-      const Eigen::Vector3d dir(std::cos(el) * std::cos(bearing), std::cos(el) * std::sin(bearing),
-                                -std::sin(el));
+      const Eigen::Vector3d dir = rayDirection(el, bearing);
       const double range = seabedRange(plane, T_world_sonar, dir);
       if (!std::isfinite(range)) {
         continue;

@@ -59,16 +59,12 @@ struct SeabedFit {
 SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
                     const SonarModel& sonar, const SeabedFit* prior, ThreadPool* pool = nullptr);
 
-struct SeabedExplanation {
-  cv::Mat explained;   ///< what the seabed explains of each pixel (<= the pixel)
-  double scale = 0.0;  ///< counts per unit of the predicted image
-};
-
-/// What of `pixels` the seabed's predicted image explains, scaled by the median ratio of lit
-/// pixels to it where it is strong. Each pixel may hold up to `headroom` times the largest
-/// prediction within `slack_bins` range bins of it (the fit's error in range).
-SeabedExplanation explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack_bins,
-                                double headroom);
+/// What the seabed's predicted image leaves of `pixels` (>= 0), the prediction scaled by the
+/// median ratio of lit pixels to it where it is strong. Each pixel may hold up to `headroom`
+/// times the largest prediction within `slack_bins` range bins of it (the fit's error in
+/// range) and be the seabed's alone.
+cv::Mat explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack_bins,
+                      double headroom);
 
 /// Where the seabed lies along a frame's rays: for ray (beam b, elevation bin k of `bins`,
 /// bin k centred at -half + (k + 0.5) step; index b * bins + k), the ranges between which a

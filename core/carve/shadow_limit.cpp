@@ -10,8 +10,7 @@ ShadowLimits shadowLimits(const cv::Mat& pixels, const Eigen::Isometry3d& T_worl
                           const VoxelMap& map, const CarvingGeometry& geometry,
                           const ShadowLimitSetup& setup, ThreadPool& pool) {
   const SonarModel& sonar = geometry.sonar();
-  const int bins = std::max(
-      1, static_cast<int>(std::ceil(2.0 * setup.half_elevation_rad / setup.elevation_step_rad)));
+  const int bins = visibilityBins(setup.half_elevation_rad, setup.elevation_step_rad);
   const int beams = sonar.cols();
   const double step = 2.0 * setup.half_elevation_rad / bins;
   const double aperture_half = 0.5 * sonar.verticalAperture();

@@ -127,7 +127,7 @@ void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source, 
   limit.elevation_bins = first_surface.elevationBins();
   limit.elevation_step_rad = result.carve.elevation_step_rad;
   // The surface voxel itself and the range bin it falls in stay observable.
-  limit.margin_m = std::sqrt(3.0) * result.carve.voxel_size_m + sonar_.range().resolution_m;
+  limit.margin_m = surfaceMargin(result.carve.voxel_size_m, sonar_.range().resolution_m);
   for (std::size_t n = 0; n < result.used.size() && !progress.cancelled(); ++n) {
     Frame frame;
     try {
