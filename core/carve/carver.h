@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "carve/carve_params.h"
+#include "carve/seabed_model.h"
 #include "common/thread_pool.h"
 #include "sonar/sonar_model.h"
 
@@ -71,9 +72,12 @@ class Carver {
   virtual ~Carver() = default;
   /// Carves one frame (CV_32F, the sonar's rows x cols) seen from `T_world_sonar`. `stamp`
   /// grows with every frame (the frame number + 1). Throws Error if the image does not match
-  /// the sonar. `visibility` is honoured only where supportsVisibilityLimit().
+  /// the sonar. `visibility` is honoured only where supportsVisibilityLimit(). `before`: the
+  /// frame before its detector, where one ran with a noise model (seabed-aware carving fits
+  /// the seabed to it; engines may ignore it).
   virtual void integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar,
-                         std::uint32_t stamp, const VisibilityLimit& visibility = {}) = 0;
+                         std::uint32_t stamp, const VisibilityLimit& visibility = {},
+                         const BeforeDetection* before = nullptr) = 0;
   virtual bool supportsVisibilityLimit() const { return false; }
   /// The value of global voxel `voxel`: VoxelMap::kUnknown if never observed.
   virtual float value(const Eigen::Vector3i& voxel) const = 0;

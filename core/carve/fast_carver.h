@@ -35,7 +35,8 @@ class FastCarver {
   /// Carves one frame (CV_32F polar image) seen from `T_world_sonar`. Changed blocks get
   /// `stamp` (use the frame number + 1).
   IntegrateStats integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar,
-                           std::uint32_t stamp, const VisibilityLimit& visibility = {});
+                           std::uint32_t stamp, const VisibilityLimit& visibility = {},
+                           const BeforeDetection* before = nullptr);
   /// Seabed-aware carving: the frames a seabed explained so far.
   std::size_t seabedFrames() const { return seabed_.framesFound(); }
 

@@ -15,8 +15,8 @@ class FastEngine final : public Carver {
         carver_(map_, setup.sonar, setup.params, setup.pool) {}
 
   void integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar, std::uint32_t stamp,
-                 const VisibilityLimit& visibility) override {
-    carver_.integrate(image, T_world_sonar, stamp, visibility);
+                 const VisibilityLimit& visibility, const BeforeDetection* before) override {
+    carver_.integrate(image, T_world_sonar, stamp, visibility, before);
   }
   bool supportsVisibilityLimit() const override { return true; }
   float value(const Eigen::Vector3i& voxel) const override { return map_.value(voxel); }

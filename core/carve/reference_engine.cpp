@@ -21,7 +21,7 @@ class ReferenceEngine final : public Carver {
   explicit ReferenceEngine(const CarverSetup& setup) : carver_(setup.sonar, setup.params) {}
 
   void integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar, std::uint32_t,
-                 const VisibilityLimit&) override {
+                 const VisibilityLimit&, const BeforeDetection*) override {
     carver_.integrate(image, T_world_sonar);
   }
   float value(const Eigen::Vector3i& voxel) const override { return carver_.value(voxel); }

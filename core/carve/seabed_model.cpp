@@ -175,6 +175,10 @@ constexpr int kRefits = 2;
 constexpr double kMaxDepthStep_m = 0.02;
 constexpr double kMaxSlopeStep = 0.002;  // 0.11 degree
 constexpr double kOutlierFactor = 1.5;
+constexpr float kNoiseClip = 3.0f;
+constexpr std::size_t kSectors = 8;
+constexpr int kStructureBox = 5;
+constexpr double kSureStructure = 5.0;
 
 }  // namespace
 
@@ -197,41 +201,65 @@ cv::Mat fitPixels(const cv::Mat& pixels, const BeamRays& rays) {
   return out;
 }
 
-// Normalised correlation of `data` (rows x fit beams) with a plane's predicted image.
-double correlation(const cv::Mat& data, const BeamRays& rays, const SeabedPlane& plane,
-                   const Eigen::Vector3d& position, const RangeBins& bins, ThreadPool* pool) {
+// Sums over the fitted pixels of one beam or of a frame (NaN in the data: left out), each
+// pixel weighted by `weights` where given (1 / the background's variance), else by 1:
+// w v e, w e e and w v v for pixel v and prediction e.
+struct FitSums {
+  double ve = 0.0, ee = 0.0, vv = 0.0;
+  FitSums& operator+=(const FitSums& o) {
+    ve += o.ve;
+    ee += o.ee;
+    vv += o.vv;
+    return *this;
+  }
+};
+
+// Per beam of `rays`, the sums of `data` (rows x fit beams) against a plane's predicted image;
+// empty if the sonar is not over the plane.
+std::vector<FitSums> beamSums(const cv::Mat& data, const cv::Mat& weights, const BeamRays& rays,
+                              const SeabedPlane& plane, const Eigen::Vector3d& position,
+                              const RangeBins& bins, ThreadPool* pool) {
   const double height = heightOver(plane, position);
   if (!(height > 0.0)) {
-    return 0.0;
+    return {};
   }
-  // Per beam: the sums of pixel x prediction, prediction^2 and pixel^2 over the pixels fitted.
-  std::vector<std::array<double, 3>> sums(rays.beams.size());
+  std::vector<FitSums> sums(rays.beams.size());
   forEachBeam(pool, rays.beams.size(), [&](std::size_t i) {
     std::vector<float> column(static_cast<std::size_t>(data.rows), 0.0f);
     accumulateBeam(column, rays, i, plane, height, bins);
-    std::array<double, 3> s{0.0, 0.0, 0.0};
+    FitSums s;
     for (int r = 0; r < data.rows; ++r) {
       const double e = column[static_cast<std::size_t>(r)];
       const double v = data.at<float>(r, static_cast<int>(i));
-      if (v < 0.0) {
+      if (std::isnan(v)) {
         continue;  // left out of the fit
       }
-      s[0] += v * e;
-      s[1] += e * e;
-      s[2] += v * v;
+      const double w = weights.empty() ? 1.0 : weights.at<float>(r, static_cast<int>(i));
+      s.ve += w * v * e;
+      s.ee += w * e * e;
+      s.vv += w * v * v;
     }
     sums[i] = s;
   });
-  double ie = 0.0, ee = 0.0, ii = 0.0;
-  for (const auto& s : sums) {
-    ie += s[0];
-    ee += s[1];
-    ii += s[2];
+  return sums;
+}
+
+FitSums frameSums(const std::vector<FitSums>& beams) {
+  FitSums total;
+  for (const auto& s : beams) {
+    total += s;
   }
-  if (!(ee > 0.0) || !(ii > 0.0)) {
+  return total;
+}
+
+// Normalised correlation of `data` (rows x fit beams) with a plane's predicted image.
+double correlation(const cv::Mat& data, const BeamRays& rays, const SeabedPlane& plane,
+                   const Eigen::Vector3d& position, const RangeBins& bins, ThreadPool* pool) {
+  const FitSums s = frameSums(beamSums(data, {}, rays, plane, position, bins, pool));
+  if (!(s.ee > 0.0) || !(s.vv > 0.0)) {
     return 0.0;
   }
-  return ie / std::sqrt(ee * ii);
+  return s.ve / std::sqrt(s.ee * s.vv);
 }
 
 struct FitParams {
@@ -287,6 +315,122 @@ double medianRatio(const cv::Mat& pixels, const cv::Mat& predicted, double floor
   return *mid;
 }
 
+// 1 / sigma^2 per pixel (sigma floored at one count).
+cv::Mat inverseVariance(const cv::Mat& sigma) {
+  cv::Mat floored = cv::max(sigma, 1.0f);
+  cv::Mat weights;
+  cv::divide(1.0, floored.mul(floored), weights, CV_32F);
+  return weights;
+}
+
+// Behind a detector: whether a plane's amplitude, fitted over each of kSectors runs of the
+// fan's beams on its own, agrees with the whole fan's where the run measures it (its
+// standard error under half the amplitude): within three standard errors and half the
+// amplitude (Lambert's law is only an approximation of a seabed's scattering) in three runs
+// of four, and at least four runs measure it.
+bool spansTheFan(const std::vector<FitSums>& beams) {
+  const FitSums total = frameSums(beams);
+  if (!(total.ee > 0.0) || !(total.ve > 0.0)) {
+    return false;
+  }
+  const double amplitude = total.ve / total.ee;
+  const std::size_t per = (beams.size() + kSectors - 1) / kSectors;
+  int measured = 0, agreeing = 0;
+  for (std::size_t first = 0; first < beams.size(); first += per) {
+    FitSums s;
+    for (std::size_t i = first; i < std::min(beams.size(), first + per); ++i) {
+      s += beams[i];
+    }
+    if (!(s.ee > 0.0)) {
+      continue;
+    }
+    const double error = 1.0 / std::sqrt(s.ee);
+    if (error >= 0.5 * amplitude) {
+      continue;
+    }
+    ++measured;
+    agreeing += std::abs(s.ve / s.ee - amplitude) <= 3.0 * error + 0.5 * amplitude ? 1 : 0;
+  }
+  return measured >= 4 && 4 * agreeing >= 3 * measured;
+}
+
+}  // namespace
+
+namespace {
+
+// What the two fits share: the plane's parameters searched from a prior (moving at most
+// kMaxDepthStep_m and kMaxSlopeStep a frame: the seabed is one surface, and what pulls a fit
+// further is structure coming into view), or without one from a scan of level planes on a
+// coarse ray set (every 16th beam, 0.5 degree intervals) and a free search; then kRefits
+// rounds, each choosing the pixels to fit for the plane found so far and searching again.
+struct PlaneSearch {
+  const SonarModel& sonar;
+  Eigen::Isometry3d T_world_sonar;
+  ThreadPool* pool;
+  /// The score of a plane on the fit's current pixels, and on the coarse rays.
+  std::function<double(const SeabedPlane&)> score;
+  std::function<double(const BeamRays&, const SeabedPlane&)> coarse_score;
+  /// Chooses the pixels to fit for the plane found so far and its predicted image.
+  std::function<void(const SeabedPlane&, const cv::Mat& predicted)> choose_pixels;
+  /// Without a prior, a scan whose best score is under this ends the search: no seabed.
+  double least_scan_score = 0.0;
+};
+
+SeabedPlane planeAt(const Eigen::Vector3d& at, const FitParams& p) {
+  return SeabedPlane::sloped(at, p.depth, p.sn, p.se);
+}
+
+// The plane found and its score; nullopt when the scan found no seabed (the scan's best
+// plane and score are then in `scan`).
+std::optional<std::pair<SeabedPlane, double>> searchPlane(const PlaneSearch& search,
+                                                          const BeamRays& rays,
+                                                          const SeabedFit* prior, SeabedFit* scan) {
+  const Eigen::Vector3d at = search.T_world_sonar.translation();
+  FitParams best{at.z() + 1.0, 0.0, 0.0};
+  FitParams start = best;
+  bool bounded = false;
+  if (prior != nullptr && prior->explains) {
+    const SeabedPlane& pq = prior->plane;
+    best = {pq.depthAt(at.x(), at.y()), pq.normal.x() / -pq.normal.z(),
+            pq.normal.y() / -pq.normal.z()};
+    start = best;
+    bounded = true;
+  } else {
+    const BeamRays coarse = beamRays(search.sonar, search.T_world_sonar.linear(),
+                                     4 * kFitBeamStride, 2.5 * kFitStep_rad, search.pool);
+    double best_score = 0.0;
+    for (double h = 0.3; h < search.sonar.range().maxRange(); h += 0.1) {
+      const FitParams p{at.z() + h, 0.0, 0.0};
+      const double s = search.coarse_score(coarse, planeAt(at, p));
+      if (s > best_score) {
+        best_score = s;
+        best = p;
+      }
+    }
+    if (best_score < search.least_scan_score) {
+      scan->plane = planeAt(at, best);
+      scan->correlation = best_score;
+      return std::nullopt;
+    }
+    patternSearch(best, 0.04, 0.02,
+                  [&](const FitParams& p) { return search.score(planeAt(at, p)); });
+  }
+  double score = 0.0;
+  for (int round = 0; round < kRefits; ++round) {
+    search.choose_pixels(planeAt(at, best),
+                         predictedImage(rays, planeAt(at, best), at, search.sonar, search.pool));
+    score = patternSearch(best, 0.01, 0.002, [&](const FitParams& p) {
+      if (bounded && (std::abs(p.depth - start.depth) > kMaxDepthStep_m ||
+                      std::abs(p.sn - start.sn) > kMaxSlopeStep ||
+                      std::abs(p.se - start.se) > kMaxSlopeStep)) {
+        return -1.0;
+      }
+      return search.score(planeAt(at, p));
+    });
+  }
+  return std::make_pair(planeAt(at, best), score);
+}
+
 }  // namespace
 
 SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
@@ -310,71 +454,107 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
   }
   const float clip = quantile(lit, 0.9);
   cv::min(data, clip, data);
-
   const Eigen::Vector3d at = T_world_sonar.translation();
-  const auto plane = [&](const FitParams& p) {
-    return SeabedPlane::sloped(at, p.depth, p.sn, p.se);
+  PlaneSearch search{
+      sonar, T_world_sonar, pool, nullptr, nullptr, nullptr, 0.5 * SeabedTracker::kMinCorrelation};
+  search.score = [&](const SeabedPlane& plane) {
+    return correlation(data, rays, plane, at, sonar.range(), pool);
   };
-  const auto score = [&](const FitParams& p) {
-    return correlation(data, rays, plane(p), at, sonar.range(), pool);
-  };
-  FitParams best{at.z() + 1.0, 0.0, 0.0};
-  // From a prior, the plane moves at most kMaxDepthStep_m and kMaxSlopeStep a frame: the
-  // seabed is one surface, and what pulls a fit further is structure coming into view.
-  FitParams start = best;
-  bool bounded = false;
-  if (prior != nullptr && prior->correlation > 0.0) {
-    const SeabedPlane& pq = prior->plane;
-    best = {pq.depthAt(at.x(), at.y()), pq.normal.x() / -pq.normal.z(),
-            pq.normal.y() / -pq.normal.z()};
-    start = best;
-    bounded = true;
-  } else {
-    // A scan of level planes with a coarse ray set (every 16th beam, 0.5 degree intervals).
-    const BeamRays coarse =
-        beamRays(sonar, T_world_sonar.linear(), 4 * kFitBeamStride, 2.5 * kFitStep_rad, pool);
+  search.coarse_score = [&](const BeamRays& coarse, const SeabedPlane& plane) {
     cv::Mat coarse_data;
     cv::min(fitPixels(pixels, coarse), clip, coarse_data);
-    double best_score = 0.0;
-    for (double h = 0.3; h < sonar.range().maxRange(); h += 0.1) {
-      const FitParams p{at.z() + h, 0.0, 0.0};
-      const double s = correlation(coarse_data, coarse, plane(p), at, sonar.range(), pool);
-      if (s > best_score) {
-        best_score = s;
-        best = p;
-      }
-    }
-    if (best_score < 0.5 * SeabedTracker::kMinCorrelation) {
-      return {plane(best), best_score};
-    }
-    patternSearch(best, 0.04, 0.02, score);
-  }
-  // Then twice on the unclipped pixels, leaving out those the last plane does not explain:
-  // structure (over kOutlierFactor times its prediction) and acoustic shadows (under a
-  // kOutlierFactor-th of it), give or take two counts of rounding. Without the shadows a box
+    return correlation(coarse_data, coarse, plane, at, sonar.range(), pool);
+  };
+  // The refits run on the unclipped pixels, leaving out those the last plane does not
+  // explain: structure (over kOutlierFactor times its prediction) and acoustic shadows (under
+  // a kOutlierFactor-th of it), give or take two counts of rounding. Without the shadows a box
   // on the seabed pulled the plane 4 cm up as it came nearer; with them, under 1 cm.
-  double fit = 0.0;
-  for (int round = 0; round < kRefits; ++round) {
-    const cv::Mat predicted = predictedImage(rays, plane(best), at, sonar, pool);
+  search.choose_pixels = [&](const SeabedPlane&, const cv::Mat& predicted) {
     const double scale = medianRatio(pixels, predicted, 0.0);
     for (int r = 0; r < raw.rows; ++r) {
       for (std::size_t i = 0; i < rays.beams.size(); ++i) {
         const double v = raw.at<float>(r, static_cast<int>(i));
         const double e = scale * predicted.at<float>(r, rays.beams[i]);
         const bool outlier = v > kOutlierFactor * e + 2.0 || v < e / kOutlierFactor - 2.0;
-        data.at<float>(r, static_cast<int>(i)) = outlier ? -1.0f : static_cast<float>(v);
+        data.at<float>(r, static_cast<int>(i)) =
+            outlier ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v);
       }
     }
-    fit = patternSearch(best, 0.01, 0.002, [&](const FitParams& p) {
-      if (bounded && (std::abs(p.depth - start.depth) > kMaxDepthStep_m ||
-                      std::abs(p.sn - start.sn) > kMaxSlopeStep ||
-                      std::abs(p.se - start.se) > kMaxSlopeStep)) {
-        return -1.0;
-      }
-      return score(p);
-    });
+  };
+  SeabedFit fit;
+  const auto found = searchPlane(search, rays, prior, &fit);
+  if (found) {
+    fit.plane = found->first;
+    fit.correlation = found->second;
+    fit.explains = fit.correlation >= SeabedTracker::kMinCorrelation;
   }
-  return {plane(best), fit};
+  return fit;
+}
+
+SeabedFit fitSeabedInNoise(const BeforeDetection& frame, const Eigen::Isometry3d& T_world_sonar,
+                           const SonarModel& sonar, const SeabedFit* prior, ThreadPool* pool) {
+  const BeamRays rays = beamRays(sonar, T_world_sonar.linear(), kFitBeamStride, kFitStep_rad, pool);
+  const cv::Mat raw = fitPixels(frame.excess, rays);
+  const cv::Mat fit_sigma = fitPixels(frame.sigma, rays);
+  const cv::Mat weights = inverseVariance(fit_sigma);
+  cv::Mat data;
+  cv::min(raw, kNoiseClip * fit_sigma, data);
+  // Structure is told from the seabed on the frame averaged over kStructureBox pixels, where
+  // the background's deviation is that many times smaller: clipping alone let the manifold's
+  // bright template tilt the plane by half a degree.
+  cv::Mat averaged;
+  cv::blur(frame.excess, averaged, cv::Size(kStructureBox, kStructureBox));
+  const cv::Mat fit_averaged = fitPixels(averaged, rays);
+  const Eigen::Vector3d at = T_world_sonar.translation();
+  // The matched filter's signal to noise: the weighted projection on the prediction over
+  // its noise.
+  const auto significance = [&](const cv::Mat& d, const cv::Mat& w, const BeamRays& r,
+                                const SeabedPlane& plane) {
+    const FitSums s = frameSums(beamSums(d, w, r, plane, at, sonar.range(), pool));
+    return s.ee > 0.0 ? s.ve / std::sqrt(s.ee) : 0.0;
+  };
+  PlaneSearch search{
+      sonar, T_world_sonar, pool, nullptr, nullptr, nullptr, 0.5 * SeabedTracker::kMinSignificance};
+  search.score = [&](const SeabedPlane& plane) { return significance(data, weights, rays, plane); };
+  search.coarse_score = [&](const BeamRays& coarse, const SeabedPlane& plane) {
+    const cv::Mat coarse_sigma = fitPixels(frame.sigma, coarse);
+    cv::Mat coarse_data;
+    cv::min(fitPixels(frame.excess, coarse), kNoiseClip * coarse_sigma, coarse_data);
+    return significance(coarse_data, inverseVariance(coarse_sigma), coarse, plane);
+  };
+  search.choose_pixels = [&](const SeabedPlane& plane, const cv::Mat& predicted) {
+    const FitSums s = frameSums(beamSums(data, weights, rays, plane, at, sonar.range(), pool));
+    const double amplitude = s.ee > 0.0 ? s.ve / s.ee : 0.0;
+    forEachBeam(pool, rays.beams.size(), [&](std::size_t i) {
+      const int c = static_cast<int>(i);
+      bool shadowed = false;
+      for (int r = 0; r < raw.rows; ++r) {
+        const float sigma = fit_sigma.at<float>(r, c);
+        const double e = amplitude * predicted.at<float>(r, rays.beams[i]);
+        const double over = fit_averaged.at<float>(r, c) - kOutlierFactor * e;
+        const bool structure = over > kNoiseClip * sigma / kStructureBox;
+        // Past the first sure return of structure along the beam, its shadow may hide the
+        // seabed, and no pixel says where: a shadow under a weak seabed's return is not told
+        // from the noise.
+        shadowed = shadowed || over > kSureStructure * sigma / kStructureBox;
+        data.at<float>(r, c) = structure || shadowed
+                                   ? std::numeric_limits<float>::quiet_NaN()
+                                   : std::min(raw.at<float>(r, c), kNoiseClip * sigma);
+      }
+    });
+  };
+  SeabedFit fit;
+  const auto found = searchPlane(search, rays, prior, &fit);
+  if (found) {
+    fit.plane = found->first;
+    fit.significance = found->second;
+    fit.explains = fit.significance >= SeabedTracker::kMinSignificance &&
+                   spansTheFan(beamSums(data, weights, rays, fit.plane, at, sonar.range(), pool));
+  } else {
+    fit.significance = fit.correlation;
+    fit.correlation = 0.0;
+  }
+  return fit;
 }
 
 cv::Mat explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack_bins,
@@ -392,9 +572,10 @@ cv::Mat explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack
 
 SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
                         const SonarModel& sonar, int bins, double half, double step,
-                        double voxel_size) {
+                        double voxel_size, double doubt_m) {
   const auto rays = static_cast<std::size_t>(sonar.cols()) * static_cast<std::size_t>(bins);
   SeabedBands out{std::vector<float>(rays, std::numeric_limits<float>::infinity()),
+                  std::vector<float>(rays, std::numeric_limits<float>::infinity()),
                   std::vector<float>(rays, std::numeric_limits<float>::infinity())};
   const Eigen::Vector3d up = T_world_sonar.linear().transpose() * plane.normal;  // sonar frame
   for (int b = 0; b < sonar.cols(); ++b) {
@@ -409,11 +590,13 @@ SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_wor
       // A voxel's centre lies within its half diagonal of the plane where the ray meets it,
       // which along a ray at grazing incidence spans more range (sine of the grazing angle,
       // floored at 0.1: 5.7 degrees).
-      const double reach = std::sqrt(3.0) * voxel_size / std::max(0.1, -up.dot(dir));
+      const double sine = std::max(0.1, -up.dot(dir));
+      const double reach = std::sqrt(3.0) * voxel_size / sine;
       const auto i = static_cast<std::size_t>(b) * static_cast<std::size_t>(bins) +
                      static_cast<std::size_t>(k);
       out.from[i] = static_cast<float>(range - reach);
       out.to[i] = static_cast<float>(range + reach);
+      out.doubt_from[i] = static_cast<float>(range - reach - doubt_m / sine);
     }
   }
   return out;
@@ -421,13 +604,17 @@ SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_wor
 
 std::optional<SeabedPlane> SeabedTracker::track(const cv::Mat& pixels,
                                                 const Eigen::Isometry3d& T_world_sonar,
-                                                const SonarModel& sonar, ThreadPool* pool) {
+                                                const SonarModel& sonar, ThreadPool* pool,
+                                                const BeforeDetection* before) {
   if (!last_ && since_scan_ > 0) {
     since_scan_ = (since_scan_ + 1) % kScanEvery;
     return std::nullopt;
   }
-  const SeabedFit fit = fitSeabed(pixels, T_world_sonar, sonar, last_ ? &*last_ : nullptr, pool);
-  if (fit.correlation < kMinCorrelation) {
+  const SeabedFit* prior = last_ ? &*last_ : nullptr;
+  const SeabedFit fit = before != nullptr && !before->excess.empty()
+                            ? fitSeabedInNoise(*before, T_world_sonar, sonar, prior, pool)
+                            : fitSeabed(pixels, T_world_sonar, sonar, prior, pool);
+  if (!fit.explains) {
     last_.reset();
     since_scan_ = 1;
     return std::nullopt;

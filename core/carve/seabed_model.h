@@ -51,6 +51,10 @@ double seabedRange(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_so
 struct SeabedFit {
   SeabedPlane plane;
   double correlation = 0.0;  ///< in [0, 1]; 0: no plane meets the beam in range
+  /// Behind a detector (fitSeabedInNoise): the matched filter's signal to noise, the
+  /// prediction's weighted projection over its noise (0 for fitSeabed).
+  double significance = 0.0;
+  bool explains = false;  ///< whether the plane explains the frame (SeabedTracker's test)
 };
 
 /// Fits a plane to one frame: from `prior` (the previous frame's plane) by a pattern search of
@@ -58,6 +62,26 @@ struct SeabedFit {
 /// level planes under the sonar first. Beams run on `pool` where given.
 SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
                     const SonarModel& sonar, const SeabedFit* prior, ThreadPool* pool = nullptr);
+
+/// A frame before its detector, for fitting a seabed behind one: its pixels less the noise
+/// model's mean (signed, CV_32F) and the background's standard deviation per pixel. A seabed
+/// is often under the detection level pixel by pixel (the manifold's: 10 to 20 counts under a
+/// background of 80), so the detector's output holds sparse false alarms of it; the frame as
+/// a whole still holds it far above the noise.
+struct BeforeDetection {
+  cv::Mat excess;
+  cv::Mat sigma;
+};
+
+/// Fits a plane to a frame with a background: the plane that maximises the matched filter's
+/// signal to noise (the excess weighted by 1 / sigma^2, clipped at 3 sigma so that bright
+/// structure does not pull it), with the same search and bounds as fitSeabed. It explains the
+/// frame when the signal to noise is at least kMinSignificance and its amplitude, fitted
+/// over each eighth of the fan's beams on its own, agrees with the whole's: a seabed spans
+/// the fan, structure that a plane happens to cross does not.
+SeabedFit fitSeabedInNoise(const BeforeDetection& frame, const Eigen::Isometry3d& T_world_sonar,
+                           const SonarModel& sonar, const SeabedFit* prior,
+                           ThreadPool* pool = nullptr);
 
 /// What the seabed's predicted image leaves of `pixels` (>= 0), the prediction scaled by the
 /// median ratio of lit pixels to it where it is strong. Each pixel may hold up to `headroom`
@@ -73,10 +97,11 @@ cv::Mat explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack
 struct SeabedBands {
   std::vector<float> from;
   std::vector<float> to;
+  std::vector<float> doubt_from;  ///< from, less `doubt_m` over the plane along the ray
 };
 SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
                         const SonarModel& sonar, int bins, double half, double step,
-                        double voxel_size);
+                        double voxel_size, double doubt_m = 0.0);
 
 /// Follows the seabed from frame to frame: each frame's plane is fitted from the last one's,
 /// or, while none is found, scanned for afresh every few frames.
@@ -86,12 +111,19 @@ class SeabedTracker {
   /// noise-free seabed gives 0.92 to 0.99 over the manifold's survey (its objects and their
   /// shadows are what it misses), a frame with no seabed in view under 0.3.
   static constexpr double kMinCorrelation = 0.8;
+  /// Behind a detector, a plane explains a frame where the matched filter's signal to noise
+  /// is at least this. Over background alone it is a standard normal at any one plane, and
+  /// the search's best stays under 5 (the noisy riser's and jacket node's frames, no seabed in
+  /// view: at most 4.3); the manifold's seabed gives 19 to 26.
+  static constexpr double kMinSignificance = 8.0;
   /// While no seabed is found, every this many frames are scanned for one.
   static constexpr int kScanEvery = 8;
 
   /// This frame's seabed, if one explains it.
+  /// With `before` (a detector ran), the plane is fitted to the frame before it.
   std::optional<SeabedPlane> track(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
-                                   const SonarModel& sonar, ThreadPool* pool = nullptr);
+                                   const SonarModel& sonar, ThreadPool* pool = nullptr,
+                                   const BeforeDetection* before = nullptr);
   /// Frames a seabed explained so far.
   std::size_t framesFound() const { return found_; }
 

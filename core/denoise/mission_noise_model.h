@@ -11,9 +11,13 @@
 // variation across the fan: log level(r, b) = rho(r) + beta(b), fitted by median polish (a
 // robust fit that ignores anything covering less than half a row or a column).
 //
-// Limits: structure that fills a whole range bin across most beams in most frames (a seabed
-// seen at one range for the whole mission, as in a lawnmower pitched down) is learned as
-// background; record empty water for such surveys (docs/denoising.md).
+// Returns that fill a whole range bin across most beams in most frames (a seabed seen at one
+// range for the whole mission, as in a lawnmower pitched down) pass both tests; they are told
+// by the ratio of mean to standard deviation, which a background's scaled distribution keeps
+// the same at every pixel and a speckled return raises, and scaled out of those bins' means.
+// Limits: a return as strong as the background in every frame of a bin raises the ratio
+// less than its mean would say (its own speckle adds deviation), so some of it stays in the
+// model (docs/denoising.md).
 #pragma once
 
 #include <vector>
@@ -27,8 +31,9 @@ namespace sonarcarve {
 struct MissionNoiseStats {
   std::size_t frames_used = 0;
   double structure_fraction = 0.0;  ///< pixels given the background shape's value
-  double background_median = 0.0;   ///< median over pixels of the learned mean intensity
-  double dark_fraction = 0.0;       ///< pixels whose learned mean is 0: dark in most frames
+  int full_row_bins = 0;  ///< range bins whose mean a return in most frames raised, scaled out
+  double background_median = 0.0;  ///< median over pixels of the learned mean intensity
+  double dark_fraction = 0.0;      ///< pixels whose learned mean is 0: dark in most frames
   /// True when the frames carry a background (speckle), which lies over every pixel. Frames
   /// with no background are dark wherever nothing returns: noise-free frames of a riser are
   /// dark almost everywhere, those of a seabed survey at least in the water before the

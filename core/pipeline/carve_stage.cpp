@@ -79,8 +79,9 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
       hooks.starting(n, *result.carver);
     }
     Frame frame;
+    BeforeDetection before;
     try {
-      frame = source.load(f.index);
+      frame = source.load(f.index, &before);
     } catch (const Error& e) {
       skip({f.index, e.what()});
       continue;
@@ -92,7 +93,7 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
       result.refinement.push_back(r);
     }
     const auto stamp = static_cast<std::uint32_t>(n + 1);
-    result.carver->integrate(frame.image, f.T_world_sonar, stamp);
+    result.carver->integrate(frame.image, f.T_world_sonar, stamp, {}, &before);
     result.carve_ms.push_back(msSince(t0));
     result.used.push_back(f);
     if (updates != nullptr) {
@@ -130,8 +131,9 @@ void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source, 
   limit.margin_m = surfaceMargin(result.carve.voxel_size_m, sonar_.range().resolution_m);
   for (std::size_t n = 0; n < result.used.size() && !progress.cancelled(); ++n) {
     Frame frame;
+    BeforeDetection before;
     try {
-      frame = source.load(result.used[n].index);
+      frame = source.load(result.used[n].index, &before);
     } catch (const Error&) {
       continue;  // it loaded in the first pass; a file changed under us is skipped again
     }
@@ -139,7 +141,7 @@ void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source, 
     limit.first_return_m = &first;
     const auto t0 = Clock::now();
     refined->integrate(frame.image, result.used[n].T_world_sonar, static_cast<std::uint32_t>(n + 1),
-                       limit);
+                       limit, &before);
     result.carve_ms[n] += msSince(t0);
     progress.report("refine", n + 1, result.used.size());
     if (check) {

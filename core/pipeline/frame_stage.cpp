@@ -74,17 +74,30 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
   std::snprintf(structure, sizeof structure, "%.1f", 100.0 * stats.structure_fraction);
   choice.reason = "noise model learned from " + std::to_string(stats.frames_used) +
                   " of the mission's own frames (no empty-water model given; " + structure +
-                  " % of pixels held structure in most frames)";
+                  " % of pixels held structure in most frames" +
+                  (stats.full_row_bins > 0 ? "; " + std::to_string(stats.full_row_bins) +
+                                                 " range bins held a return across the fan, a "
+                                                 "seabed, scaled out"
+                                           : std::string()) +
+                  ")";
   return choice;
 }
 
 DenoisedFrames::DenoisedFrames(const Mission& mission, const SonarModel& sonar,
                                const NoiseChoice& noise)
     : mission_(mission),
-      detector_(std::make_shared<const Detector>(noise.detector, noise.model, sonar)) {}
+      detector_(std::make_shared<const Detector>(noise.detector, noise.model, sonar)),
+      model_(noise.model),
+      background_sigma_(detector_->backgroundSigma()) {}
 
-Frame DenoisedFrames::load(std::size_t index) const {
+Frame DenoisedFrames::load(std::size_t index, BeforeDetection* before) const {
   Frame frame = loadFrame(mission_, index);
+  if (before != nullptr && !background_sigma_.empty()) {
+    cv::Mat pixels;
+    frame.image.convertTo(pixels, CV_32F);
+    before->excess = pixels - model_->mean();
+    before->sigma = background_sigma_;
+  }
   frame.image = detector_->apply(frame.image);
   return frame;
 }

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "carve/seabed_model.h"
 #include "common/progress.h"
 #include "denoise/detector.h"
 #include "io/mission.h"
@@ -54,13 +55,17 @@ class DenoisedFrames {
  public:
   /// Builds the detector; throws Error naming the parameter on a problem.
   DenoisedFrames(const Mission& mission, const SonarModel& sonar, const NoiseChoice& noise);
-  /// Throws Error naming the frame's file if it cannot be read.
-  Frame load(std::size_t index) const;
+  /// Throws Error naming the frame's file if it cannot be read. With `before`, where a
+  /// Z-test ran, fills it with the frame before the detector less the noise's mean and the
+  /// background's standard deviation (for seabed-aware carving); left empty otherwise.
+  Frame load(std::size_t index, BeforeDetection* before = nullptr) const;
   const Detector& detector() const { return *detector_; }
 
  private:
   const Mission& mission_;
   std::shared_ptr<const Detector> detector_;
+  std::shared_ptr<const NoiseModel> model_;
+  cv::Mat background_sigma_;  // ztest: the detector's, per pixel before its box filter
 };
 
 }  // namespace sonarcarve

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "carve/carver.h"
@@ -12,6 +13,7 @@
 #include "carve/voxel_map.h"
 #include "common/angles.h"
 #include "common/thread_pool.h"
+#include "sim/noise.h"
 #include "sim/ray_caster.h"
 #include "sim/scene_shapes.h"
 #include "sim/sonar_simulator.h"
@@ -28,10 +30,11 @@ constexpr double kSeabed_m = 20.0;
 constexpr double kBin_m = 0.02;
 constexpr double kVoxel_m = CarveParams::kDefaultVoxelSize_m;
 
-// 2 cm bins from 0.5 m to 10.5 m, 65 beams over 64 degrees, 20 degree aperture (sinc^2 beam).
-SonarModel surveySonar() {
-  return SonarModel("survey", RangeBins{0.5, kBin_m, 500}, BearingTable::uniform(degToRad(64), 65),
-                    degToRad(20));
+// 2 cm bins from 0.5 m to 10.5 m, `beams` beams over 64 degrees, 20 degree aperture (sinc^2
+// beam).
+SonarModel surveySonar(int beams = 65) {
+  return SonarModel("survey", RangeBins{0.5, kBin_m, 500},
+                    BearingTable::uniform(degToRad(64), beams), degToRad(20));
 }
 
 // A sonar at `position` facing north, pitched 30 degrees down: a seabed survey's geometry.
@@ -97,6 +100,52 @@ TEST(SeabedModel, FitFindsTheSeabedWithinHalfARangeBin) {
     const double truth = kSeabed_m + ahead * std::tan(degToRad(slope_deg));
     EXPECT_NEAR(fit.plane.depthAt(ahead, 0.0), truth, 0.5 * kBin_m);
     EXPECT_NEAR(std::atan(slopeNorth(fit.plane)), degToRad(slope_deg), degToRad(0.5));
+  }
+}
+
+// Behind a detector: a frame of a level seabed under the simulator's default background, less
+// the background's mean, with the background's deviation per pixel (Rayleigh: 0.523 times its
+// mean). The seabed returns a fraction of that deviation pixel by pixel, the frame as a whole
+// far more. From no prior, in one frame, the plane ahead is found within what the carving
+// allows a fit behind a detector: a voxel's half diagonal (the seabed's band, 3.5 cm at 2 cm
+// voxels) and the 3 cm of doubt over it, 3 range bins here. It explains the frame; the
+// background alone is not explained.
+TEST(SeabedModel, FitFindsTheSeabedUnderTheBackground) {
+  const SonarModel sonar = surveySonar(256);
+  const Eigen::Isometry3d T = surveyPose({0.0, 0.0, kSeabed_m - 3.0});
+  const cv::Mat seabed = render(seabedSquare({0, 0, kSeabed_m}, 30.0, 0.0, 48, 0.3f), sonar, T);
+  const NoiseSpec noise;
+  const FrameNoise background(noise, sonar);
+  cv::Mat mean(sonar.rows(), sonar.cols(), CV_32F);
+  for (int r = 0; r < mean.rows; ++r) {
+    for (int c = 0; c < mean.cols; ++c) {
+      mean.at<float>(r, c) = static_cast<float>(backgroundMean(noise, sonar, r, c));
+    }
+  }
+  const cv::Mat sigma = mean * std::sqrt(4.0 / std::numbers::pi - 1.0);
+  const auto fit = [&](const cv::Mat& image, std::uint64_t index) {
+    cv::Mat noisy = image.clone();
+    background.add(noisy, index);
+    return fitSeabedInNoise(BeforeDetection{noisy - mean, sigma}, T, sonar, nullptr);
+  };
+  // The seabed is under the background's deviation in most of its pixels.
+  double under_deviation = 0.0, lit = 0.0;
+  for (int r = 0; r < seabed.rows; ++r) {
+    for (int c = 0; c < seabed.cols; ++c) {
+      if (seabed.at<float>(r, c) > 0.0f) {
+        lit += 1.0;
+        under_deviation += seabed.at<float>(r, c) < sigma.at<float>(r, c) ? 1.0 : 0.0;
+      }
+    }
+  }
+  ASSERT_GT(under_deviation, 0.9 * lit);
+  for (const std::uint64_t index : {1u, 2u, 3u}) {
+    SCOPED_TRACE(index);
+    const SeabedFit found = fit(seabed, index);
+    EXPECT_TRUE(found.explains) << found.significance;
+    EXPECT_NEAR(found.plane.depthAt(5.0, 0.0), kSeabed_m, 3.0 * kBin_m);
+    const SeabedFit none = fit(cv::Mat::zeros(seabed.size(), CV_32F), index);
+    EXPECT_FALSE(none.explains) << none.significance;
   }
 }
 

@@ -25,7 +25,7 @@ class ToyCarver final : public Carver {
   }
 
   void integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar, std::uint32_t,
-                 const VisibilityLimit&) override {
+                 const VisibilityLimit&, const BeforeDetection*) override {
     if (image.type() != CV_32F || image.rows != sonar_.rows() || image.cols != sonar_.cols()) {
       throw Error("toy engine", "frame", "image does not match the sonar model");
     }
