@@ -323,24 +323,51 @@ cv::Mat inverseVariance(const cv::Mat& sigma) {
   return weights;
 }
 
-// Behind a detector: whether a plane's amplitude, fitted over each of kSectors runs of the
-// fan's beams on its own, agrees with the whole fan's where the run measures it (its
-// standard error under half the amplitude): within three standard errors and half the
-// amplitude (Lambert's law is only an approximation of a seabed's scattering) in three runs
-// of four, and at least four runs measure it.
-bool spansTheFan(const std::vector<FitSums>& beams) {
-  const FitSums total = frameSums(beams);
+// Behind a detector, the sums over cells of the fan: kSectors runs of its beams, each cut in
+// two along range where the plane's prediction has half its energy (the near and the far
+// seabed). `data` and `weights` are rows x fit beams, `predicted` the full image.
+std::vector<FitSums> cellSums(const cv::Mat& data, const cv::Mat& weights, const BeamRays& rays,
+                              const cv::Mat& predicted) {
+  const std::size_t per = (rays.beams.size() + kSectors - 1) / kSectors;
+  std::vector<FitSums> cells(2 * ((rays.beams.size() + per - 1) / per));
+  for (std::size_t i = 0; i < rays.beams.size(); ++i) {
+    const int c = static_cast<int>(i);
+    double energy = 0.0;
+    for (int r = 0; r < data.rows; ++r) {
+      const double e = predicted.at<float>(r, rays.beams[i]);
+      energy += e * e;
+    }
+    double before = 0.0;
+    for (int r = 0; r < data.rows; ++r) {
+      const double e = predicted.at<float>(r, rays.beams[i]);
+      before += e * e;
+      const double v = data.at<float>(r, c);
+      if (std::isnan(v) || !(e > 0.0)) {
+        continue;
+      }
+      const double w = weights.at<float>(r, c);
+      FitSums& cell = cells[2 * (i / per) + (before > 0.5 * energy ? 1 : 0)];
+      cell.ve += w * v * e;
+      cell.ee += w * e * e;
+    }
+  }
+  return cells;
+}
+
+// Behind a detector: whether a plane's amplitude, fitted over each cell on its own, agrees
+// with the whole fan's where the cell measures it (its standard error under half the
+// amplitude): within three standard errors and half the amplitude (Lambert's law is only an
+// approximation of a seabed's scattering) in three cells of four, and at least four cells
+// measure it. A seabed spans the fan and its range; structure that a plane happens to cross
+// (the top of a template a metre over the seabed) lights some cells only.
+bool spansTheFan(const std::vector<FitSums>& cells) {
+  const FitSums total = frameSums(cells);
   if (!(total.ee > 0.0) || !(total.ve > 0.0)) {
     return false;
   }
   const double amplitude = total.ve / total.ee;
-  const std::size_t per = (beams.size() + kSectors - 1) / kSectors;
   int measured = 0, agreeing = 0;
-  for (std::size_t first = 0; first < beams.size(); first += per) {
-    FitSums s;
-    for (std::size_t i = first; i < std::min(beams.size(), first + per); ++i) {
-      s += beams[i];
-    }
+  for (const FitSums& s : cells) {
     if (!(s.ee > 0.0)) {
       continue;
     }
@@ -549,7 +576,8 @@ SeabedFit fitSeabedInNoise(const BeforeDetection& frame, const Eigen::Isometry3d
     fit.plane = found->first;
     fit.significance = found->second;
     fit.explains = fit.significance >= SeabedTracker::kMinSignificance &&
-                   spansTheFan(beamSums(data, weights, rays, fit.plane, at, sonar.range(), pool));
+                   spansTheFan(cellSums(data, weights, rays,
+                                        predictedImage(rays, fit.plane, at, sonar, pool)));
   } else {
     fit.significance = fit.correlation;
     fit.correlation = 0.0;
@@ -615,10 +643,18 @@ std::optional<SeabedPlane> SeabedTracker::track(const cv::Mat& pixels,
                             ? fitSeabedInNoise(*before, T_world_sonar, sonar, prior, pool)
                             : fitSeabed(pixels, T_world_sonar, sonar, prior, pool);
   if (!fit.explains) {
+    // Behind a detector a frame of weak seabed (structure over it, its shadow) is expected:
+    // the last plane stays the prior for up to kScanEvery frames, where a fresh scan could
+    // lock onto structure.
+    if (before != nullptr && !before->excess.empty() && last_ && ++misses_ <= kScanEvery) {
+      return std::nullopt;
+    }
     last_.reset();
+    misses_ = 0;
     since_scan_ = 1;
     return std::nullopt;
   }
+  misses_ = 0;
   last_ = fit;
   ++found_;
   return fit.plane;

@@ -77,8 +77,9 @@ struct BeforeDetection {
 /// signal to noise (the excess weighted by 1 / sigma^2, clipped at 3 sigma so that bright
 /// structure does not pull it), with the same search and bounds as fitSeabed. It explains the
 /// frame when the signal to noise is at least kMinSignificance and its amplitude, fitted
-/// over each eighth of the fan's beams on its own, agrees with the whole's: a seabed spans
-/// the fan, structure that a plane happens to cross does not.
+/// over each of 16 cells on its own (an eighth of the fan's beams, its near or far half of
+/// the prediction), agrees with the whole's: a seabed spans the fan and its ranges, structure
+/// that a plane happens to cross does not.
 SeabedFit fitSeabedInNoise(const BeforeDetection& frame, const Eigen::Isometry3d& T_world_sonar,
                            const SonarModel& sonar, const SeabedFit* prior,
                            ThreadPool* pool = nullptr);
@@ -120,7 +121,8 @@ class SeabedTracker {
   static constexpr int kScanEvery = 8;
 
   /// This frame's seabed, if one explains it.
-  /// With `before` (a detector ran), the plane is fitted to the frame before it.
+  /// With `before` (a detector ran), the plane is fitted to the frame before it, and a frame
+  /// it does not explain keeps the last plane as the prior for up to kScanEvery frames.
   std::optional<SeabedPlane> track(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sonar,
                                    const SonarModel& sonar, ThreadPool* pool = nullptr,
                                    const BeforeDetection* before = nullptr);
@@ -130,6 +132,7 @@ class SeabedTracker {
  private:
   std::optional<SeabedFit> last_;
   int since_scan_ = 0;
+  int misses_ = 0;
   std::size_t found_ = 0;
 };
 

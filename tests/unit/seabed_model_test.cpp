@@ -103,6 +103,35 @@ TEST(SeabedModel, FitFindsTheSeabedWithinHalfARangeBin) {
   }
 }
 
+// A frame of a level seabed under the simulator's default background, as the pipeline hands it
+// to seabed-aware carving behind a detector: less the background's mean, with the background's
+// deviation per pixel (Rayleigh: 0.523 times its mean).
+struct NoisySeabed {
+  SonarModel sonar = surveySonar(256);
+  Eigen::Isometry3d T = surveyPose({0.0, 0.0, kSeabed_m - 3.0});
+  cv::Mat seabed = render(seabedSquare({0, 0, kSeabed_m}, 30.0, 0.0, 48, 0.3f), sonar, T);
+  NoiseSpec noise;
+  FrameNoise background{noise, sonar};
+  cv::Mat mean = [&] {
+    cv::Mat m(sonar.rows(), sonar.cols(), CV_32F);
+    for (int r = 0; r < m.rows; ++r) {
+      for (int c = 0; c < m.cols; ++c) {
+        m.at<float>(r, c) = static_cast<float>(backgroundMean(noise, sonar, r, c));
+      }
+    }
+    return m;
+  }();
+  cv::Mat sigma = mean * std::sqrt(4.0 / std::numbers::pi - 1.0);
+
+  /// `image` (the seabed's, or none) with the background of frame `index`.
+  BeforeDetection before(const cv::Mat& image, std::uint64_t index) const {
+    cv::Mat noisy = image.clone();
+    background.add(noisy, index);
+    return {noisy - mean, sigma};
+  }
+  cv::Mat none() const { return cv::Mat::zeros(seabed.size(), CV_32F); }
+};
+
 // Behind a detector: a frame of a level seabed under the simulator's default background, less
 // the background's mean, with the background's deviation per pixel (Rayleigh: 0.523 times its
 // mean). The seabed returns a fraction of that deviation pixel by pixel, the frame as a whole
@@ -111,42 +140,45 @@ TEST(SeabedModel, FitFindsTheSeabedWithinHalfARangeBin) {
 // voxels) and the 3 cm of doubt over it, 3 range bins here. It explains the frame; the
 // background alone is not explained.
 TEST(SeabedModel, FitFindsTheSeabedUnderTheBackground) {
-  const SonarModel sonar = surveySonar(256);
-  const Eigen::Isometry3d T = surveyPose({0.0, 0.0, kSeabed_m - 3.0});
-  const cv::Mat seabed = render(seabedSquare({0, 0, kSeabed_m}, 30.0, 0.0, 48, 0.3f), sonar, T);
-  const NoiseSpec noise;
-  const FrameNoise background(noise, sonar);
-  cv::Mat mean(sonar.rows(), sonar.cols(), CV_32F);
-  for (int r = 0; r < mean.rows; ++r) {
-    for (int c = 0; c < mean.cols; ++c) {
-      mean.at<float>(r, c) = static_cast<float>(backgroundMean(noise, sonar, r, c));
-    }
-  }
-  const cv::Mat sigma = mean * std::sqrt(4.0 / std::numbers::pi - 1.0);
-  const auto fit = [&](const cv::Mat& image, std::uint64_t index) {
-    cv::Mat noisy = image.clone();
-    background.add(noisy, index);
-    return fitSeabedInNoise(BeforeDetection{noisy - mean, sigma}, T, sonar, nullptr);
-  };
+  const NoisySeabed f;
   // The seabed is under the background's deviation in most of its pixels.
   double under_deviation = 0.0, lit = 0.0;
-  for (int r = 0; r < seabed.rows; ++r) {
-    for (int c = 0; c < seabed.cols; ++c) {
-      if (seabed.at<float>(r, c) > 0.0f) {
+  for (int r = 0; r < f.seabed.rows; ++r) {
+    for (int c = 0; c < f.seabed.cols; ++c) {
+      if (f.seabed.at<float>(r, c) > 0.0f) {
         lit += 1.0;
-        under_deviation += seabed.at<float>(r, c) < sigma.at<float>(r, c) ? 1.0 : 0.0;
+        under_deviation += f.seabed.at<float>(r, c) < f.sigma.at<float>(r, c) ? 1.0 : 0.0;
       }
     }
   }
   ASSERT_GT(under_deviation, 0.9 * lit);
   for (const std::uint64_t index : {1u, 2u, 3u}) {
     SCOPED_TRACE(index);
-    const SeabedFit found = fit(seabed, index);
+    const SeabedFit found = fitSeabedInNoise(f.before(f.seabed, index), f.T, f.sonar, nullptr);
     EXPECT_TRUE(found.explains) << found.significance;
     EXPECT_NEAR(found.plane.depthAt(5.0, 0.0), kSeabed_m, 3.0 * kBin_m);
-    const SeabedFit none = fit(cv::Mat::zeros(seabed.size(), CV_32F), index);
+    const SeabedFit none = fitSeabedInNoise(f.before(f.none(), index), f.T, f.sonar, nullptr);
     EXPECT_FALSE(none.explains) << none.significance;
   }
+}
+
+// Behind a detector a frame without the seabed's evidence (here, background alone) between two
+// with it does not lose the seabed: the next frame is fitted from the last plane at once. A
+// lost seabed is scanned for only every kScanEvery frames, and a scan is where a plane can
+// lock onto structure (the noisy manifold: a metre over the seabed, on its template).
+TEST(SeabedModel, BehindADetectorOneWeakFrameKeepsTheSeabed) {
+  const NoisySeabed f;
+  SeabedTracker tracker;
+  const auto track = [&](const cv::Mat& image, std::uint64_t index) {
+    const BeforeDetection before = f.before(image, index);
+    return tracker.track(f.none(), f.T, f.sonar, nullptr, &before);
+  };
+  ASSERT_TRUE(track(f.seabed, 1).has_value());
+  EXPECT_FALSE(track(f.none(), 2).has_value());
+  const auto again = track(f.seabed, 3);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_NEAR(again->depthAt(5.0, 0.0), kSeabed_m, 3.0 * kBin_m);
+  EXPECT_EQ(tracker.framesFound(), 2u);
 }
 
 // A frame of a vertical pipe, level sonar, no seabed in range: no plane explains it.
