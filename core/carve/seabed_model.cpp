@@ -381,10 +381,6 @@ bool spansTheFan(const std::vector<FitSums>& cells) {
   return measured >= 4 && 4 * agreeing >= 3 * measured;
 }
 
-}  // namespace
-
-namespace {
-
 // What the two fits share: the plane's parameters searched from a prior (moving at most
 // kMaxDepthStep_m and kMaxSlopeStep a frame: the seabed is one surface, and what pulls a fit
 // further is structure coming into view), or without one from a scan of level planes on a
@@ -407,11 +403,15 @@ SeabedPlane planeAt(const Eigen::Vector3d& at, const FitParams& p) {
   return SeabedPlane::sloped(at, p.depth, p.sn, p.se);
 }
 
-// The plane found and its score; nullopt when the scan found no seabed (the scan's best
-// plane and score are then in `scan`).
-std::optional<std::pair<SeabedPlane, double>> searchPlane(const PlaneSearch& search,
-                                                          const BeamRays& rays,
-                                                          const SeabedFit* prior, SeabedFit* scan) {
+// The plane found and its score, or with `found` false the scan's best when it found no
+// seabed.
+struct PlaneFound {
+  SeabedPlane plane;
+  double score = 0.0;
+  bool found = false;
+};
+
+PlaneFound searchPlane(const PlaneSearch& search, const BeamRays& rays, const SeabedFit* prior) {
   const Eigen::Vector3d at = search.T_world_sonar.translation();
   FitParams best{at.z() + 1.0, 0.0, 0.0};
   FitParams start = best;
@@ -435,9 +435,7 @@ std::optional<std::pair<SeabedPlane, double>> searchPlane(const PlaneSearch& sea
       }
     }
     if (best_score < search.least_scan_score) {
-      scan->plane = planeAt(at, best);
-      scan->correlation = best_score;
-      return std::nullopt;
+      return {planeAt(at, best), best_score, false};
     }
     patternSearch(best, 0.04, 0.02,
                   [&](const FitParams& p) { return search.score(planeAt(at, p)); });
@@ -455,7 +453,7 @@ std::optional<std::pair<SeabedPlane, double>> searchPlane(const PlaneSearch& sea
       return search.score(planeAt(at, p));
     });
   }
-  return std::make_pair(planeAt(at, best), score);
+  return {planeAt(at, best), score, true};
 }
 
 }  // namespace
@@ -508,14 +506,9 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
       }
     }
   };
-  SeabedFit fit;
-  const auto found = searchPlane(search, rays, prior, &fit);
-  if (found) {
-    fit.plane = found->first;
-    fit.correlation = found->second;
-    fit.explains = fit.correlation >= SeabedTracker::kMinCorrelation;
-  }
-  return fit;
+  const PlaneFound found = searchPlane(search, rays, prior);
+  return {found.plane, found.score, 0.0,
+          found.found && found.score >= SeabedTracker::kMinCorrelation};
 }
 
 SeabedFit fitSeabedInNoise(const BeforeDetection& frame, const Eigen::Isometry3d& T_world_sonar,
@@ -570,18 +563,11 @@ SeabedFit fitSeabedInNoise(const BeforeDetection& frame, const Eigen::Isometry3d
       }
     });
   };
-  SeabedFit fit;
-  const auto found = searchPlane(search, rays, prior, &fit);
-  if (found) {
-    fit.plane = found->first;
-    fit.significance = found->second;
-    fit.explains = fit.significance >= SeabedTracker::kMinSignificance &&
-                   spansTheFan(cellSums(data, weights, rays,
-                                        predictedImage(rays, fit.plane, at, sonar, pool)));
-  } else {
-    fit.significance = fit.correlation;
-    fit.correlation = 0.0;
-  }
+  const PlaneFound found = searchPlane(search, rays, prior);
+  SeabedFit fit{found.plane, 0.0, found.score, false};
+  fit.explains =
+      found.found && fit.significance >= SeabedTracker::kMinSignificance &&
+      spansTheFan(cellSums(data, weights, rays, predictedImage(rays, fit.plane, at, sonar, pool)));
   return fit;
 }
 
