@@ -109,8 +109,9 @@ cv::Mat separableFit(const cv::Mat& field) {
 // Per range bin the ratio, over the beams' median of the raw frames' pixels and a running
 // median over kRatioRows bins, is compared with the background's, taken where it is lowest
 // (the 10th percentile of bins: the water before the seabed's first return); a bin whose
-// ratio is higher has its mean scaled down by the two ratios. Returns the number of range
-// bins whose ratio is higher by more than kRatioNoise.
+// ratio is higher takes the background's fitted shape (`mean_fit`) scaled down by the two
+// ratios as its mean. Returns the number of range bins whose ratio is higher by more than
+// kRatioNoise.
 int scaleOutFullRowReturns(const std::vector<cv::Mat>& raw, const cv::Mat& mean_fit,
                            cv::Mat& mean) {
   const int rows = mean.rows, cols = mean.cols;
