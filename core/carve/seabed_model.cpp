@@ -390,9 +390,10 @@ struct PlaneSearch {
   const SonarModel& sonar;
   Eigen::Isometry3d T_world_sonar;
   ThreadPool* pool;
-  /// The score of a plane on the fit's current pixels, and on the coarse rays.
+  /// The score of a plane on the fit's current pixels.
   std::function<double(const SeabedPlane&)> score;
-  std::function<double(const BeamRays&, const SeabedPlane&)> coarse_score;
+  /// For the scan: the score on the coarse rays, their pixels prepared once.
+  std::function<std::function<double(const SeabedPlane&)>(const BeamRays&)> coarse_scorer;
   /// Chooses the pixels to fit for the plane found so far and its predicted image.
   std::function<void(const SeabedPlane&, const cv::Mat& predicted)> choose_pixels;
   /// Without a prior, a scan whose best score is under this ends the search: no seabed.
@@ -425,10 +426,11 @@ PlaneFound searchPlane(const PlaneSearch& search, const BeamRays& rays, const Se
   } else {
     const BeamRays coarse = beamRays(search.sonar, search.T_world_sonar.linear(),
                                      4 * kFitBeamStride, 2.5 * kFitStep_rad, search.pool);
+    const auto coarse_score = search.coarse_scorer(coarse);
     double best_score = 0.0;
     for (double h = 0.3; h < search.sonar.range().maxRange(); h += 0.1) {
       const FitParams p{at.z() + h, 0.0, 0.0};
-      const double s = search.coarse_score(coarse, planeAt(at, p));
+      const double s = coarse_score(planeAt(at, p));
       if (s > best_score) {
         best_score = s;
         best = p;
@@ -485,10 +487,12 @@ SeabedFit fitSeabed(const cv::Mat& pixels, const Eigen::Isometry3d& T_world_sona
   search.score = [&](const SeabedPlane& plane) {
     return correlation(data, rays, plane, at, sonar.range(), pool);
   };
-  search.coarse_score = [&](const BeamRays& coarse, const SeabedPlane& plane) {
+  search.coarse_scorer = [&](const BeamRays& coarse) {
     cv::Mat coarse_data;
     cv::min(fitPixels(pixels, coarse), clip, coarse_data);
-    return correlation(coarse_data, coarse, plane, at, sonar.range(), pool);
+    return [&, coarse_data](const SeabedPlane& plane) {
+      return correlation(coarse_data, coarse, plane, at, sonar.range(), pool);
+    };
   };
   // The refits run on the unclipped pixels, leaving out those the last plane does not
   // explain: structure (over kOutlierFactor times its prediction) and acoustic shadows (under
@@ -536,11 +540,14 @@ SeabedFit fitSeabedInNoise(const BeforeDetection& frame, const Eigen::Isometry3d
   PlaneSearch search{
       sonar, T_world_sonar, pool, nullptr, nullptr, nullptr, 0.5 * SeabedTracker::kMinSignificance};
   search.score = [&](const SeabedPlane& plane) { return significance(data, weights, rays, plane); };
-  search.coarse_score = [&](const BeamRays& coarse, const SeabedPlane& plane) {
+  search.coarse_scorer = [&](const BeamRays& coarse) {
     const cv::Mat coarse_sigma = fitPixels(frame.sigma, coarse);
+    const cv::Mat coarse_weights = inverseVariance(coarse_sigma);
     cv::Mat coarse_data;
     cv::min(fitPixels(frame.excess, coarse), kNoiseClip * coarse_sigma, coarse_data);
-    return significance(coarse_data, inverseVariance(coarse_sigma), coarse, plane);
+    return [&, coarse_data, coarse_weights](const SeabedPlane& plane) {
+      return significance(coarse_data, coarse_weights, coarse, plane);
+    };
   };
   search.choose_pixels = [&](const SeabedPlane& plane, const cv::Mat& predicted) {
     const FitSums s = frameSums(beamSums(data, weights, rays, plane, at, sonar.range(), pool));

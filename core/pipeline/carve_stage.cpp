@@ -81,7 +81,7 @@ CarveStageResult CarveStage::run(const std::vector<PosedFrame>& frames,
     Frame frame;
     BeforeDetection before;
     try {
-      frame = source.load(f.index, &before);
+      frame = source.load(f.index, result.carve.seabed_aware ? &before : nullptr);
     } catch (const Error& e) {
       skip({f.index, e.what()});
       continue;
@@ -133,7 +133,7 @@ void CarveStage::refine(CarveStageResult& result, const DenoisedFrames& source, 
     Frame frame;
     BeforeDetection before;
     try {
-      frame = source.load(result.used[n].index, &before);
+      frame = source.load(result.used[n].index, result.carve.seabed_aware ? &before : nullptr);
     } catch (const Error&) {
       continue;  // it loaded in the first pass; a file changed under us is skipped again
     }

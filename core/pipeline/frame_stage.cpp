@@ -93,9 +93,7 @@ DenoisedFrames::DenoisedFrames(const Mission& mission, const SonarModel& sonar,
 Frame DenoisedFrames::load(std::size_t index, BeforeDetection* before) const {
   Frame frame = loadFrame(mission_, index);
   if (before != nullptr && !background_sigma_.empty()) {
-    cv::Mat pixels;
-    frame.image.convertTo(pixels, CV_32F);
-    before->excess = pixels - model_->mean();
+    before->excess = frame.image - model_->mean();  // both CV_32F (sonar/frame.h)
     before->sigma = background_sigma_;
   }
   frame.image = detector_->apply(frame.image);
