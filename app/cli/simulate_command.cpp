@@ -35,6 +35,8 @@ struct SimulateOptions {
   int rays_per_beam = 2;
   std::string beam = "realistic";
   double horizontal_beam_width_deg = 0.0;
+  double spreading_exponent = 0.0;
+  double tvg_exponent = 0.0;
   double visible_cell_m = 0.01;
   float reflectivity = 0.8f;
   bool empty_water = false;
@@ -57,6 +59,8 @@ NoiseSpec noiseFrom(const std::string& choice, std::uint64_t seed) {
   NoiseSpec spec;
   if (choice == "none") {
     spec = NoiseSpec::none();
+  } else if (choice == "coherent") {
+    spec = NoiseSpec::coherent();
   } else if (choice != "default") {
     spec = NoiseSpec::fromYamlFile(choice);
   }
@@ -95,6 +99,8 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   imaging.beam = beamFromName(o.beam);
   imaging.horizontal_beam_width_rad = degToRad(o.horizontal_beam_width_deg);
   imaging.visible_cell_m = o.visible_cell_m;
+  imaging.spreading_exponent = o.spreading_exponent;
+  imaging.tvg_exponent = o.tvg_exponent;
   // The seabed field is surveyed as a field: only its tiles near the sonar are built.
   const bool field = o.scene == "seabed-field";
   const SimulationRequest request{
@@ -153,7 +159,10 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "vertical | orbit | lawnmower | navigation CSV of vehicle poses; auto picks the "
                   "scene's usual one")
       ->capture_default_str();
-  cmd->add_option("--noise", o->noise, "none | default | noise YAML file")->capture_default_str();
+  cmd->add_option("--noise", o->noise,
+                  "none | default | coherent (the default noise, each return and the background "
+                  "combined as phasors: docs/simulator.md) | noise YAML file")
+      ->capture_default_str();
   cmd->add_option("--out", o->out, "Mission folder to write")->required();
   cmd->add_option("--standoff", o->standoff_m, "Distance from the sonar to the structure's axis, m")
       ->capture_default_str();
@@ -215,6 +224,16 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "Realistic beam: -3 dB width of each beam in bearing, deg; 0 = the bearing "
                   "spacing")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--spreading-loss", o->spreading_exponent,
+                  "Returns fall with range as r^-K (K = 2: spherical spreading of intensity one "
+                  "way, 4: both ways); 0: none, as if a time-varied gain undid it")
+      ->check(CLI::Range(0.0, 8.0))
+      ->capture_default_str();
+  cmd->add_option("--tvg", o->tvg_exponent,
+                  "Time-varied gain of the sonar: returns times r^K; with --spreading-loss, "
+                  "the difference is what the images keep of the spreading")
+      ->check(CLI::Range(0.0, 8.0))
       ->capture_default_str();
   cmd->add_option("--visible-cell", o->visible_cell_m,
                   "Ground truth: one seen surface point per cell of this side, m, in "

@@ -18,6 +18,12 @@ NoiseSpec NoiseSpec::none() {
   return spec;
 }
 
+NoiseSpec NoiseSpec::coherent() {
+  NoiseSpec spec;
+  spec.combination = NoiseCombination::Coherent;
+  return spec;
+}
+
 NoiseSpec NoiseSpec::fromYamlFile(const std::string& path) {
   const YamlFields fields(path);
   const YAML::Node root = fields.load();
@@ -41,6 +47,13 @@ NoiseSpec NoiseSpec::fromYamlFile(const std::string& path) {
   if (root["enabled"]) {
     spec.enabled = root["enabled"].as<bool>();
   }
+  if (root["combination"]) {
+    const std::string name = fields.text(root["combination"], "combination");
+    if (name != "added" && name != "coherent") {
+      fields.fail(root["combination"], "combination", "expected added or coherent");
+    }
+    spec.combination = name == "coherent" ? NoiseCombination::Coherent : NoiseCombination::Added;
+  }
   return spec;
 }
 
@@ -52,6 +65,8 @@ std::string NoiseSpec::toYaml() const {
       << "near_range_scale_m: " << shortestNumber(near_range_scale_m) << "\n"
       << "edge_boost: " << shortestNumber(edge_boost) << "\n"
       << "speckle_looks: " << shortestNumber(speckle_looks) << "\n"
+      << "combination: " << (combination == NoiseCombination::Coherent ? "coherent" : "added")
+      << "\n"
       << "seed: " << seed << "\n";
   return out.str();
 }
@@ -100,13 +115,21 @@ void FrameNoise::add(cv::Mat& image, std::uint64_t frame_index) const {
   std::gamma_distribution<float> speckle(static_cast<float>(spec_.speckle_looks),
                                          static_cast<float>(1.0 / spec_.speckle_looks));
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const bool coherent = spec_.combination == NoiseCombination::Coherent;
   for (int r = 0; r < image.rows; ++r) {
     float* row = image.ptr<float>(r);
     const double* sigma = background_sigma_.ptr<double>(r);
     for (int c = 0; c < image.cols; ++c) {
       const double background = sigma[c] * std::sqrt(-2.0 * std::log(1.0 - uniform(rng)));
       const double signal = row[c] > 0.0f ? static_cast<double>(row[c] * speckle(rng)) : 0.0;
-      row[c] = std::clamp(static_cast<float>(signal + background), 0.0f, 65535.0f);
+      double value = signal + background;
+      if (coherent && signal > 0.0) {
+        // The background is the envelope of a complex Gaussian: its phase against the
+        // return's is uniform.
+        const double phase = 2.0 * std::numbers::pi * uniform(rng);
+        value = std::hypot(signal + background * std::cos(phase), background * std::sin(phase));
+      }
+      row[c] = std::clamp(static_cast<float>(value), 0.0f, 65535.0f);
     }
   }
 }

@@ -3,7 +3,11 @@
 //    Gaussian reverberation) whose mean follows a range- and bearing-dependent level: stronger
 //    near the sonar (near-field reverberation) and towards the edges of the fan;
 //  - speckle on returns: each return is multiplied by a Gamma variate of mean 1 and shape
-//    `looks` (fully developed speckle averaged over `looks` independent looks).
+//    `looks` (fully developed speckle averaged over `looks` independent looks);
+//  - how a return and the background meet in a pixel: added (the return's amplitude plus the
+//    background's, the default) or coherent (the envelope of their phasors, the background's
+//    phase uniform: a Rician pixel, as a real receiver forms it; a return as strong as the
+//    background then raises the pixel's mean by a fraction of itself, not by all of it).
 // An empty-water frame is the background alone: the frames a noise model is learned from.
 #pragma once
 
@@ -15,6 +19,9 @@
 
 namespace sonarcarve {
 
+/// How a return and the background combine in a pixel (see the top of this file).
+enum class NoiseCombination { Added, Coherent };
+
 struct NoiseSpec {
   bool enabled = true;
   double background_mean = 150.0;   ///< mean background amplitude at far range, centre beam
@@ -22,9 +29,12 @@ struct NoiseSpec {
   double near_range_scale_m = 1.5;  ///< e-folding range of the near-range boost
   double edge_boost = 0.6;          ///< extra background at the edge of the fan, as a factor
   double speckle_looks = 4.0;       ///< Gamma shape of the speckle on returns (>0)
+  NoiseCombination combination = NoiseCombination::Added;
   std::uint64_t seed = 1;
 
   static NoiseSpec none();
+  /// The default noise, its returns and background combined coherently.
+  static NoiseSpec coherent();
   /// Reads a noise YAML file (keys as the fields above); throws Error naming file and line.
   static NoiseSpec fromYamlFile(const std::string& path);
   std::string toYaml() const;

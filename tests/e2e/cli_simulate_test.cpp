@@ -62,6 +62,24 @@ TEST(CliSimulate, ClippedBeamIsRecordedInTheSettings) {
   EXPECT_NE(bad.output.find("--beam"), std::string::npos) << bad.output;
 }
 
+TEST(CliSimulate, CoherentNoiseAndSpreadingLossAreRecordedInTheSettings) {
+  test::ScratchDir dir;
+  const auto out = dir.path() / "riser";
+  const auto r = runCli(
+      "simulate --scene riser --max-frames 1 --noise coherent --spreading-loss 2 "
+      "--tvg 1 --out " +
+      quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string settings = test::readText(out / "simulation.yaml");
+  EXPECT_NE(settings.find("combination: coherent"), std::string::npos) << settings;
+  EXPECT_DOUBLE_EQ(settingValue(settings, "spreading_exponent"), 2.0) << settings;
+  EXPECT_DOUBLE_EQ(settingValue(settings, "tvg_exponent"), 1.0) << settings;
+  const auto bad =
+      runCli("simulate --scene riser --spreading-loss -1 --out " + quoted(dir.path() / "b"));
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("--spreading-loss"), std::string::npos) << bad.output;
+}
+
 TEST(CliNavError, WritesTheMissionsNavigationWithSeededErrors) {
   // The example mission's navigation, with a constant bias of 0.5 m (standard deviation per
   // axis) and no other error: every sample moves by the same offset, the same for one seed.

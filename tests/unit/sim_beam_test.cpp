@@ -129,6 +129,18 @@ TEST(SimBeam, RealisticElevationBeamFollowsSincSquared) {
   EXPECT_EQ(bandEnergy(sonar, settings, beam.null(2) + step, beam.null(2) + degToRad(3)), 0.0);
 }
 
+TEST(SimBeam, SpreadingLossAndGainScaleReturnsWithRange) {
+  // Every ray meets the sphere at kRange: the image's energy scales by kRange^(tvg - spreading).
+  const SonarModel sonar = smallSonar();
+  ImagingSettings s = realistic(0.05);
+  const double lo = -degToRad(5), hi = degToRad(5);
+  const double plain = bandEnergy(sonar, s, lo, hi);
+  s.spreading_exponent = 2.0;
+  EXPECT_NEAR(bandEnergy(sonar, s, lo, hi) / plain, std::pow(kRange, -2.0), 1e-4);
+  s.tvg_exponent = 1.5;
+  EXPECT_NEAR(bandEnergy(sonar, s, lo, hi) / plain, std::pow(kRange, -0.5), 1e-4);
+}
+
 TEST(SimBeam, ClippedBeamStopsAtTheAperture) {
   const SonarModel sonar = smallSonar();
   ImagingSettings clipped;

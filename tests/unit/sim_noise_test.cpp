@@ -99,6 +99,65 @@ TEST(SimNoise, NoiseSettingsRoundTripThroughYaml) {
   EXPECT_EQ(back.near_range_boost, spec.near_range_boost);
   test::writeText(dir.path() / "bad.yaml", "speckle_looks: -1\n");
   EXPECT_THROW(NoiseSpec::fromYamlFile((dir.path() / "bad.yaml").string()), Error);
+  EXPECT_EQ(back.combination, NoiseCombination::Added);
+  test::writeText(dir.path() / "coherent.yaml", NoiseSpec::coherent().toYaml());
+  EXPECT_EQ(NoiseSpec::fromYamlFile((dir.path() / "coherent.yaml").string()).combination,
+            NoiseCombination::Coherent);
+  test::writeText(dir.path() / "bad_sum.yaml", "combination: multiplied\n");
+  try {
+    NoiseSpec::fromYamlFile((dir.path() / "bad_sum.yaml").string());
+    ADD_FAILURE() << "an unknown combination was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("expected added or coherent"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Every pixel holds a return as strong as the background's mean there; the two noises are
+// drawn with one seed. Returns the frame divided by the background's mean per pixel.
+cv::Mat returnsAtTheBackgroundsLevel(const NoiseSpec& spec, const SonarModel& sonar) {
+  cv::Mat image(sonar.rows(), sonar.cols(), CV_32F);
+  for (int r = 0; r < image.rows; ++r) {
+    for (int c = 0; c < image.cols; ++c) {
+      image.at<float>(r, c) = static_cast<float>(backgroundMean(spec, sonar, r, c));
+    }
+  }
+  cv::Mat level = image.clone();
+  addNoise(image, spec, sonar, 5);
+  return image / level;
+}
+
+TEST(SimNoise, CoherentReturnsAndBackgroundFormARicianPixel) {
+  const SonarModel sonar = test::paperSonar();
+  NoiseSpec coherent = NoiseSpec::coherent();
+  coherent.background_mean = 200.0;  // well above the counts' rounding
+  NoiseSpec added = coherent;
+  added.combination = NoiseCombination::Added;
+  const cv::Mat c = returnsAtTheBackgroundsLevel(coherent, sonar);
+  const cv::Mat a = returnsAtTheBackgroundsLevel(added, sonar);
+  // Per unit of the background's mean m (Rayleigh scale sigma^2 = 2 m^2 / pi), a return of m
+  // with Gamma speckle of L looks has E[(S g)^2] = 1 + 1 / L. Phasors: E[R^2] = E[(S g)^2] +
+  // 2 sigma^2 whatever the phase (Rician); added amplitudes: E[R] = 1 + 1 (return + mean).
+  const double looks = coherent.speckle_looks;
+  const double expected_power = 1.0 + 1.0 / looks + 4.0 / std::numbers::pi;
+  // 325,000 pixels; R^2 has a spread about its mean: the mean is known to under 0.5 %.
+  EXPECT_NEAR(cv::mean(c.mul(c))[0], expected_power, 0.01 * expected_power);
+  EXPECT_NEAR(cv::mean(a)[0], 2.0, 0.01);
+  // So the return raises the coherent pixel's mean by much less than its own level: E[R] is
+  // 1.405 (integrated numerically over the speckle, the background and the phase, 4e5 draws),
+  // 0.405 over the background alone, where the added return raises it by 1.
+  EXPECT_NEAR(cv::mean(c)[0], 1.405, 0.01);
+}
+
+TEST(SimNoise, EmptyWaterIsTheSameWhateverTheCombination) {
+  const SonarModel sonar = test::paperSonar();
+  const NoiseSpec added;
+  const NoiseSpec coherent = NoiseSpec::coherent();
+  cv::Mat a(sonar.rows(), sonar.cols(), CV_32F, cv::Scalar(0.0f));
+  cv::Mat c = a.clone();
+  addNoise(a, added, sonar, 2);
+  addNoise(c, coherent, sonar, 2);
+  EXPECT_EQ(cv::norm(a, c, cv::NORM_INF), 0.0);
 }
 
 }  // namespace
