@@ -387,7 +387,7 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   // Seabed-aware: the frame's seabed, what it explains of the pixels, and the rest.
   std::optional<SeabedPlane> seabed;
   cv::Mat unexplained;
-  const bool behind_detector = before != nullptr && !before->excess.empty();
+  const bool behind_detector = behindDetector(before);
   if (params_.seabed_aware && frame.beam_aware) {
     seabed = seabed_.track(pixels, T_world_sonar, sonar, &pool_, before);
   }

@@ -632,14 +632,14 @@ std::optional<SeabedPlane> SeabedTracker::track(const cv::Mat& pixels,
     return std::nullopt;
   }
   const SeabedFit* prior = last_ ? &*last_ : nullptr;
-  const SeabedFit fit = before != nullptr && !before->excess.empty()
-                            ? fitSeabedInNoise(*before, T_world_sonar, sonar, prior, pool)
-                            : fitSeabed(pixels, T_world_sonar, sonar, prior, pool);
+  const bool noisy = behindDetector(before);
+  const SeabedFit fit = noisy ? fitSeabedInNoise(*before, T_world_sonar, sonar, prior, pool)
+                              : fitSeabed(pixels, T_world_sonar, sonar, prior, pool);
   if (!fit.explains) {
     // Behind a detector a frame of weak seabed (structure over it, its shadow) is expected:
     // the last plane stays the prior for up to kScanEvery frames, where a fresh scan could
     // lock onto structure.
-    if (before != nullptr && !before->excess.empty() && last_ && ++misses_ <= kScanEvery) {
+    if (noisy && last_ && ++misses_ <= kScanEvery) {
       return std::nullopt;
     }
     last_.reset();

@@ -73,6 +73,11 @@ struct BeforeDetection {
   cv::Mat sigma;
 };
 
+/// Whether `before` holds a frame before its detector (a Z-test ran): empty otherwise.
+inline bool behindDetector(const BeforeDetection* before) {
+  return before != nullptr && !before->excess.empty();
+}
+
 /// Fits a plane to a frame with a background: the plane that maximises the matched filter's
 /// signal to noise (the excess weighted by 1 / sigma^2, clipped at 3 sigma so that bright
 /// structure does not pull it), with the same search and bounds as fitSeabed. It explains the
