@@ -48,11 +48,12 @@ NoiseSpec NoiseSpec::fromYamlFile(const std::string& path) {
     spec.enabled = root["enabled"].as<bool>();
   }
   if (root["combination"]) {
-    const std::string name = fields.text(root["combination"], "combination");
-    if (name != "added" && name != "coherent") {
+    const auto combination =
+        enumFromString<NoiseCombination>(fields.text(root["combination"], "combination"));
+    if (!combination) {
       fields.fail(root["combination"], "combination", "expected added or coherent");
     }
-    spec.combination = name == "coherent" ? NoiseCombination::Coherent : NoiseCombination::Added;
+    spec.combination = *combination;
   }
   return spec;
 }
@@ -65,8 +66,7 @@ std::string NoiseSpec::toYaml() const {
       << "near_range_scale_m: " << shortestNumber(near_range_scale_m) << "\n"
       << "edge_boost: " << shortestNumber(edge_boost) << "\n"
       << "speckle_looks: " << shortestNumber(speckle_looks) << "\n"
-      << "combination: " << (combination == NoiseCombination::Coherent ? "coherent" : "added")
-      << "\n"
+      << "combination: " << toString(combination) << "\n"
       << "seed: " << seed << "\n";
   return out.str();
 }

@@ -15,12 +15,20 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "common/enum_names.h"
 #include "sonar/sonar_model.h"
 
 namespace sonarcarve {
 
 /// How a return and the background combine in a pixel (see the top of this file).
 enum class NoiseCombination { Added, Coherent };
+inline constexpr std::array<EnumName<NoiseCombination>, 2> kNoiseCombinationNames{{
+    {NoiseCombination::Added, "added"},
+    {NoiseCombination::Coherent, "coherent"},
+}};
+constexpr const auto& enumNamesOf(NoiseCombination) {
+  return kNoiseCombinationNames;
+}
 
 struct NoiseSpec {
   bool enabled = true;
