@@ -1,4 +1,5 @@
 // `sonarcarve-cli frame MISSION --index N --polar P.png --fan F.png`: pictures of one frame.
+#include <iomanip>
 #include <iostream>
 
 #include "cli/commands.h"
@@ -51,7 +52,10 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
                   "no such frame: the mission has " + std::to_string(mission.frames.size()));
     }
     const Frame frame = loadFrame(mission, o->index);
-    DisplayWindow window = DisplayWindow::fromPercentiles(frame.image);
+    // Drawn in the sonar's own counts (what --low and --high are in), not in power.
+    const IntensityScale& scale = mission.sonar.intensityScale();
+    const cv::Mat counts = scale.powerToCounts(frame.image);
+    DisplayWindow window = DisplayWindow::fromPercentiles(counts);
     if (o->low >= 0.0f) {
       window.low = o->low;
     }
@@ -59,10 +63,10 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
       window.high = o->high;
     }
     if (!o->polar.empty()) {
-      writePng(polarPicture(frame.image, window), o->polar);
+      writePng(polarPicture(counts, window), o->polar);
     }
     if (!o->fan.empty()) {
-      writePng(fanPicture(frame.image, mission.sonar, window), o->fan);
+      writePng(fanPicture(counts, mission.sonar, window), o->fan);
     }
     if (!o->detected.empty()) {
       DetectorParams params;
@@ -72,10 +76,11 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
       const Detector detector(params,
                               std::make_shared<const NoiseModel>(NoiseModel::load(o->noise_model)),
                               mission.sonar);
-      writePng(polarPicture(detector.apply(frame.image), window), o->detected);
+      writePng(polarPicture(scale.powerToCounts(detector.apply(frame.image)), window), o->detected);
     }
-    std::cout << "frame " << o->index << " at t = " << frame.time_s << " s, intensity window "
-              << window.low << " .. " << window.high << "\n";
+    std::cout << "frame " << o->index << " at t = " << std::fixed << std::setprecision(3)
+              << frame.time_s << " s, intensity window " << std::defaultfloat << window.low
+              << " .. " << window.high << " counts (" << scale.describe() << ")\n";
     exit_code = 0;
   });
 }

@@ -51,7 +51,8 @@ nlohmann::json summaryJson(const SonarModel& sonar, const MissionSummary& s) {
         {"bearing_min_deg", radToDeg(sonar.bearings().centre(0))},
         {"bearing_max_deg", radToDeg(sonar.bearings().centre(sonar.cols() - 1))},
         {"field_of_view_deg", radToDeg(sonar.bearings().fieldOfView())},
-        {"vertical_aperture_deg", radToDeg(sonar.verticalAperture())}}},
+        {"vertical_aperture_deg", radToDeg(sonar.verticalAperture())},
+        {"intensity_scale", sonar.intensityScale().describe()}}},
       {"navigation",
        {{"samples", s.nav_samples},
         {"start_s", s.nav_start_s},
@@ -74,7 +75,9 @@ void printText(const SonarModel& sonar, const MissionSummary& s) {
               radToDeg(sonar.bearings().centre(0)),
               radToDeg(sonar.bearings().centre(sonar.cols() - 1)),
               radToDeg(sonar.bearings().fieldOfView()));
-  std::printf("  aperture   %.2f deg vertical (-3 dB, sinc)\n", radToDeg(sonar.verticalAperture()));
+  std::printf("  aperture   %.2f deg vertical (-3 dB, %s)\n", radToDeg(sonar.verticalAperture()),
+              sonar.elevationBeam() == ElevationBeam::Clipped ? "clipped" : "sinc");
+  std::printf("  intensity  %s\n", sonar.intensityScale().describe().c_str());
   std::printf("Navigation   %zu samples, %.3f s to %.3f s, path %.2f m\n", s.nav_samples,
               s.nav_start_s, s.nav_end_s, s.nav_path_length_m);
   std::printf("  extent     north %.2f..%.2f  east %.2f..%.2f  down %.2f..%.2f m\n",

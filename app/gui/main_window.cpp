@@ -663,10 +663,13 @@ void MainWindow::showFrame(int index) {
         ShownFrame shown;
         shown.index = index;
         Frame frame = loadFrame(*mission, static_cast<std::size_t>(index));
-        shown.raw = frame.image;
-        shown.range = widgets::displayRange(frame.image);
+        // Shown in the sonar's own counts (a decibel sonar's power would show only its
+        // brightest returns), with the same window for the denoised view.
+        const IntensityScale& scale = mission->sonar.intensityScale();
+        shown.raw = scale.powerToCounts(frame.image);
+        shown.range = widgets::displayRange(shown.raw);
         if (detector) {
-          shown.denoised = detector->apply(frame.image);
+          shown.denoised = scale.powerToCounts(detector->apply(frame.image));
         }
         return shown;
       },

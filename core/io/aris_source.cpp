@@ -18,6 +18,12 @@ namespace {
 // ARIS files do not state the elevation beam width; the ARIS lenses' is about 14 degrees.
 constexpr double kArisVerticalApertureDeg = 14.0;
 
+// ARIS samples are logarithmic: bytes 0..255 span 0..80 dB (the ARIS file SDK's
+// docs/understanding-aris-data.md). Frames are loaded as power.
+IntensityScale arisIntensityScale() {
+  return IntensityScale::decibel(80.0, 255.0);
+}
+
 class ArisSource final : public FrameSource {
  public:
   ArisSource(std::shared_ptr<const ArisFile> file, std::string sonar_id, double time_offset_s)
@@ -30,6 +36,7 @@ class ArisSource final : public FrameSource {
     frame.time_s = file_->frames().at(index).time_us * 1e-6 + time_offset_s_;
     frame.sonar_id = sonar_id_;
     frame.image = file_->image(index);
+    arisIntensityScale().countsToPower(frame.image);
     return frame;
   }
 
@@ -75,8 +82,9 @@ Mission openArisFile(const std::filesystem::path& path, const OpenOptions& optio
   // RangeEnd are the window's edges.
   const RangeBins range{first.windowStart(), first.sampleLength(),
                         static_cast<int>(first.samples_per_beam)};
-  SonarModel sonar("aris", range, BearingTable::fromCentres(lens.centres_rad),
-                   degToRad(aperture_deg));
+  const SonarModel sonar =
+      SonarModel("aris", range, BearingTable::fromCentres(lens.centres_rad), degToRad(aperture_deg))
+          .withIntensityScale(arisIntensityScale());
   std::vector<double> times;
   for (const ArisFrameInfo& f : file->frames()) {
     times.push_back(f.time_us * 1e-6 + options.time_offset_s);

@@ -67,7 +67,8 @@ std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& path, bool 
   return frames;
 }
 
-// The frames of a mission folder: 16-bit PNGs named by the frame index.
+// The frames of a mission folder: 16-bit PNGs named by the frame index, holding the sonar's
+// counts (converted to power by its intensity scale).
 class MissionFolderSource final : public FrameSource {
  public:
   explicit MissionFolderSource(const Mission& mission)
@@ -94,6 +95,7 @@ class MissionFolderSource final : public FrameSource {
                       std::to_string(sonar_.rows()) + " range bins x " +
                       std::to_string(sonar_.cols()) + " beams");
     }
+    sonar_.intensityScale().countsToPower(frame.image);
     return frame;
   }
 

@@ -29,7 +29,9 @@ void MissionWriter::addFrame(const Frame& frame) {
   if (frame.image.rows != sonar_.rows() || frame.image.cols != sonar_.cols()) {
     throw Error(what, "", "frame size does not match the sonar model");
   }
-  writeFileAtomically(folder_ / name, encodeFramePng(frame.image, what));
+  // The file holds the sonar's own counts: a decibel sonar's 80 dB of power do not fit 16 bits.
+  writeFileAtomically(folder_ / name,
+                      encodeFramePng(sonar_.intensityScale().powerToCounts(frame.image), what));
   records_.push_back({frame.time_s, sonar_.id(), name, 0});
 }
 

@@ -30,6 +30,44 @@ BearingTable bearingsFromYaml(const YAML::Node& node, const YamlFields& fields,
   }
 }
 
+// `intensity:` absent or `linear`, or {scale: decibel, full_scale_db: 80, full_scale_count: 255}.
+IntensityScale intensityFromYaml(const YAML::Node& node, const YamlFields& fields,
+                                 const std::string& path) {
+  if (!node) {
+    return IntensityScale::linear();
+  }
+  const char* expected =
+      "expected 'linear' or a mapping {scale: decibel, full_scale_db, full_scale_count}";
+  if (node.IsScalar()) {
+    if (fields.text(node, path) != "linear") {
+      fields.fail(node, path, expected);
+    }
+    return IntensityScale::linear();
+  }
+  if (!node.IsMap()) {
+    fields.fail(node, path, expected);
+  }
+  const YAML::Node scale = fields.child(node, path, "scale");
+  const std::string name = fields.text(scale, path + ".scale");
+  if (name == "linear") {
+    return IntensityScale::linear();
+  }
+  if (name != "decibel") {
+    fields.fail(scale, path + ".scale", "expected 'linear' or 'decibel'");
+  }
+  return IntensityScale::decibel(
+      fields.positive(fields.child(node, path, "full_scale_db"), path + ".full_scale_db"),
+      fields.positive(fields.child(node, path, "full_scale_count"), path + ".full_scale_count"));
+}
+
+void emitIntensity(YAML::Emitter& out, const IntensityScale& scale) {
+  out << YAML::Flow << YAML::BeginMap;
+  out << YAML::Key << "scale" << YAML::Value << "decibel";
+  out << YAML::Key << "full_scale_db" << YAML::Value << shortestNumber(scale.fullScaleDb());
+  out << YAML::Key << "full_scale_count" << YAML::Value << shortestNumber(scale.fullScaleCount());
+  out << YAML::EndMap;
+}
+
 }  // namespace
 
 SonarModel sonarFromYaml(const YAML::Node& node, const YamlFields& fields,
@@ -64,9 +102,12 @@ SonarModel sonarFromYaml(const YAML::Node& node, const YamlFields& fields,
                   "aperture)");
     }
   }
+  const IntensityScale intensity =
+      intensityFromYaml(node["intensity"], fields, path + ".intensity");
   try {
     return SonarModel(id, range, std::move(bearings), degToRad(aperture_deg))
-        .withElevationBeam(beam);
+        .withElevationBeam(beam)
+        .withIntensityScale(intensity);
   } catch (const Error& e) {
     fields.fail(node, path, e.place() + ": " + e.message());
   }
@@ -99,6 +140,10 @@ void emitSonar(YAML::Emitter& out, const SonarModel& sonar) {
       << shortestDegrees(sonar.verticalAperture());
   out << YAML::Key << "beam_pattern" << YAML::Value
       << (sonar.elevationBeam() == ElevationBeam::Clipped ? "clipped" : "sinc");
+  if (!sonar.intensityScale().isLinear()) {  // linear, the default, is left implicit
+    out << YAML::Key << "intensity" << YAML::Value;
+    emitIntensity(out, sonar.intensityScale());
+  }
   out << YAML::EndMap;
 }
 

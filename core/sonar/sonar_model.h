@@ -1,6 +1,6 @@
 // SonarModel: the geometry of a 2D imaging sonar (range bins, bearing table, vertical aperture,
-// elevation beam pattern) and the conversions between a pixel, polar coordinates and 3D points
-// in the sonar frame.
+// elevation beam pattern), the scale of its counts, and the conversions between a pixel, polar
+// coordinates and 3D points in the sonar frame.
 //
 // Sonar frame (docs/conventions.md): x forward along the boresight, y to starboard, z down.
 // Bearing phi is positive to starboard; elevation theta is positive up (towards -z):
@@ -15,6 +15,7 @@
 
 #include "sonar/beam_pattern.h"
 #include "sonar/bearing_table.h"
+#include "sonar/intensity_scale.h"
 #include "sonar/range_bins.h"
 
 namespace sonarcarve {
@@ -54,8 +55,8 @@ class SonarModel {
   double verticalAperture() const { return beam_pattern_.aperture(); }
   /// The same sonar with another vertical aperture (radians).
   SonarModel withVerticalAperture(double vertical_aperture_rad) const {
-    SonarModel other(id_, range_, bearings_, vertical_aperture_rad);
-    other.elevation_beam_ = elevation_beam_;
+    SonarModel other = *this;
+    other.beam_pattern_ = BeamPattern(vertical_aperture_rad);
     return other;
   }
   ElevationBeam elevationBeam() const { return elevation_beam_; }
@@ -65,6 +66,14 @@ class SonarModel {
     other.elevation_beam_ = beam;
     return other;
   }
+  /// How the sonar's counts relate to the echo's power (frames are loaded as power).
+  const IntensityScale& intensityScale() const { return intensity_scale_; }
+  SonarModel withIntensityScale(IntensityScale scale) const {
+    SonarModel other = *this;
+    other.intensity_scale_ = scale;
+    return other;
+  }
+
   int rows() const { return range_.count; }
   int cols() const { return bearings_.count(); }
 
@@ -82,6 +91,7 @@ class SonarModel {
   BearingTable bearings_;
   BeamPattern beam_pattern_;
   ElevationBeam elevation_beam_ = ElevationBeam::MainLobe;
+  IntensityScale intensity_scale_;
 };
 
 }  // namespace sonarcarve

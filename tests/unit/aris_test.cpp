@@ -2,10 +2,14 @@
 // and empty, truncated and corrupt copies of it.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "common/angles.h"
 #include "common/error.h"
 #include "io/aris_file.h"
+#include "io/frame_png.h"
 #include "io/frame_source.h"
+#include "io/import.h"
 #include "io/mission.h"
 #include "support/test_support.h"
 
@@ -88,6 +92,47 @@ TEST(ArisFixture, OpensThroughTheRegistryWithTheTelephotoTable) {
   const Frame frame = loadFrame(mission, 5);
   EXPECT_EQ(frame.image.rows, 2000);
   EXPECT_NEAR(frame.time_s, 1371198079.886496, 1e-6);
+}
+
+// ARIS samples are decibels (0..255 for 0..80 dB): the engine gets the echo's power, so that
+// dividing by the beam's power gain and the keep level's ratio of powers mean what they say.
+TEST(ArisFixture, FramesLoadAsThePowerOfTheirDecibelSamples) {
+  const Mission mission = openMission(arisFixture());
+  EXPECT_EQ(mission.sonar.intensityScale(), IntensityScale::decibel(80.0, 255.0));
+  const cv::Mat bytes = ArisFile::open(arisFixture()).image(0);
+  const cv::Mat power = loadFrame(mission, 0).image;
+  ASSERT_EQ(power.size(), bytes.size());
+  EXPECT_NEAR(power.at<float>(0, 47), std::pow(10.0, 119.0 * 80.0 / 2550.0), 1e-5 * 4.6e3);
+  EXPECT_NEAR(power.at<float>(0, 0), std::pow(10.0, 131.0 * 80.0 / 2550.0), 1e-5 * 1.3e4);
+  double worst = 0.0;
+  for (int r = 0; r < bytes.rows; r += 7) {
+    for (int c = 0; c < bytes.cols; ++c) {
+      const double expected = std::pow(10.0, bytes.at<float>(r, c) * 8.0 / 255.0);
+      worst = std::max(worst, std::abs(power.at<float>(r, c) / expected - 1.0));
+    }
+  }
+  EXPECT_LT(worst, 1e-5);  // float precision, far under the 7.5 % of one count
+}
+
+// Imported into a mission folder, the frames keep the sonar's bytes (80 dB of power would not
+// fit a 16-bit PNG) and the folder says they are decibels: it loads the same power.
+TEST(ArisFixture, ImportKeepsTheBytesAndTheirScale) {
+  test::ScratchDir dir;
+  ImportRequest request;
+  request.log = arisFixture();
+  request.out = dir.path() / "m";
+  SilentProgress progress;
+  importRecordingToMission(request, OpenOptions{}, progress);
+  EXPECT_NE(test::readText(request.out / "mission.yaml")
+                .find("intensity: {scale: decibel, full_scale_db: 80, full_scale_count: 255}"),
+            std::string::npos);
+  const cv::Mat bytes = ArisFile::open(arisFixture()).image(3);
+  EXPECT_EQ(cv::norm(readFramePng(request.out / "frames/000003.png"), bytes, cv::NORM_INF), 0.0);
+  const Mission imported = openMission(request.out);
+  const Mission in_place = openMission(arisFixture());
+  EXPECT_EQ(imported.sonar.intensityScale(), in_place.sonar.intensityScale());
+  EXPECT_EQ(cv::norm(loadFrame(imported, 3).image, loadFrame(in_place, 3).image, cv::NORM_INF),
+            0.0);
 }
 
 TEST(ArisErrors, EmptyAndShortFilesNameTheFileAndWhatWasExpected) {

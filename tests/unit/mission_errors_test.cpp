@@ -78,6 +78,23 @@ TEST_F(MissionErrors, InvalidSonarValue) {
   expectReadError({"mission.yaml", "sonar.range.resolution_m: expected a positive number"});
 }
 
+TEST_F(MissionErrors, InvalidIntensityScale) {
+  const std::string original = readText(mission_ / "mission.yaml");
+  const std::pair<std::string, std::string> cases[] = {
+      {"{scale: decibels, full_scale_db: 80, full_scale_count: 255}",
+       "sonar.intensity.scale: expected 'linear' or 'decibel'"},
+      {"{scale: decibel, full_scale_db: 0, full_scale_count: 255}",
+       "sonar.intensity.full_scale_db: expected a positive number"},
+      {"{scale: decibel, full_scale_db: 80}", "sonar.intensity.full_scale_count: missing"},
+      {"logarithmic", "sonar.intensity: expected 'linear' or a mapping"}};
+  for (const auto& [intensity, message] : cases) {
+    writeText(mission_ / "mission.yaml", original);
+    edit("mission.yaml",
+         "vertical_aperture_deg:", "intensity: " + intensity + "\n  vertical_aperture_deg:");
+    expectReadError({"mission.yaml", message});
+  }
+}
+
 TEST_F(MissionErrors, MissingNavigationFile) {
   std::filesystem::remove(mission_ / "nav.csv");
   expectReadError({"nav.csv: not found: expected a CSV table"});

@@ -36,6 +36,7 @@ void expectSameMission(const SonarModel& sonar, const Mounting& mounting, const 
   }
   EXPECT_EQ(read.sonar.verticalAperture(), sonar.verticalAperture());
   EXPECT_EQ(read.sonar.elevationBeam(), sonar.elevationBeam());
+  EXPECT_EQ(read.sonar.intensityScale(), sonar.intensityScale());
   EXPECT_TRUE(read.mounting.T_vehicle_sonar().isApprox(mounting.T_vehicle_sonar(), 1e-15));
   ASSERT_EQ(read.nav.samples().size(), nav.samples().size());
   for (std::size_t i = 0; i < nav.samples().size(); ++i) {
@@ -63,10 +64,13 @@ void roundTrip(const SonarModel& sonar) {
   cv::RNG rng(5);
   for (int i = 0; i < 4; ++i) {
     Frame f{1000.1 + 0.5 * i, sonar.id(), cv::Mat(sonar.rows(), sonar.cols(), CV_32F)};
-    rng.fill(f.image, cv::RNG::UNIFORM, 0, 65536);
+    // Whole counts the sonar can hold, loaded as power as a reader does.
+    const IntensityScale& scale = sonar.intensityScale();
+    rng.fill(f.image, cv::RNG::UNIFORM, 0, scale.isLinear() ? 65536 : scale.fullScaleCount() + 1);
     cv::Mat rounded;
     f.image.convertTo(rounded, CV_16U);
     rounded.convertTo(f.image, CV_32F);
+    scale.countsToPower(f.image);
     writer.addFrame(f);
     frames.push_back(f);
   }
@@ -89,6 +93,11 @@ TEST(MissionFormat, WriteThenReadGivesTheSameMissionWithABearingTable) {
 TEST(MissionFormat, AClippedBeamIsWrittenAndReadBack) {
   // A mission from a clipped-beam simulation says so, and carving stays inside the aperture.
   roundTrip(test::paperSonar().withElevationBeam(ElevationBeam::Clipped));
+}
+
+TEST(MissionFormat, ADecibelSonarIsStoredInItsOwnCountsAndReadBackAsTheSamePower) {
+  // 80 dB of power do not fit a 16-bit PNG; the sonar's bytes do, and give the power back.
+  roundTrip(test::paperSonar().withIntensityScale(IntensityScale::decibel(80.0, 255.0)));
 }
 
 TEST(MissionFormat, TheExampleMissionReadsCompletely) {

@@ -1,0 +1,72 @@
+#include "sonar/intensity_scale.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "common/error.h"
+
+namespace sonarcarve {
+namespace {
+
+std::string shortNumber(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+void requireFloatImage(const cv::Mat& image) {
+  if (image.type() != CV_32F) {
+    throw Error("intensity scale", "image", "expected a CV_32F image");
+  }
+}
+
+}  // namespace
+
+IntensityScale IntensityScale::decibel(double full_scale_db, double full_scale_count) {
+  if (!(full_scale_db > 0.0) || !std::isfinite(full_scale_db)) {
+    throw Error("intensity scale", "full_scale_db",
+                "expected a positive number of decibels, got " + shortNumber(full_scale_db));
+  }
+  if (!(full_scale_count > 0.0) || !std::isfinite(full_scale_count)) {
+    throw Error("intensity scale", "full_scale_count",
+                "expected a positive count, got " + shortNumber(full_scale_count));
+  }
+  IntensityScale scale;
+  scale.full_scale_db_ = full_scale_db;
+  scale.full_scale_count_ = full_scale_count;
+  return scale;
+}
+
+std::string IntensityScale::describe() const {
+  if (isLinear()) {
+    return "linear";
+  }
+  return "decibel (" + shortNumber(full_scale_count_) + " counts = " + shortNumber(full_scale_db_) +
+         " dB)";
+}
+
+void IntensityScale::countsToPower(cv::Mat& image) const {
+  requireFloatImage(image);
+  if (isLinear()) {
+    return;
+  }
+  // power = exp(count * ln(10) * dB_per_count / 10)
+  const double nepers_per_count = std::log(10.0) * full_scale_db_ / full_scale_count_ / 10.0;
+  image.convertTo(image, CV_32F, nepers_per_count);
+  cv::exp(image, image);
+}
+
+cv::Mat IntensityScale::powerToCounts(const cv::Mat& image) const {
+  requireFloatImage(image);
+  if (isLinear()) {
+    return image.clone();
+  }
+  cv::Mat counts;
+  cv::max(image, 1.0f, counts);  // count 0 is power 1: nothing below it
+  cv::log(counts, counts);
+  const double counts_per_neper = full_scale_count_ * 10.0 / (full_scale_db_ * std::log(10.0));
+  counts.convertTo(counts, CV_32F, counts_per_neper);
+  return counts;
+}
+
+}  // namespace sonarcarve

@@ -1,0 +1,44 @@
+// IntensityScale: how a sonar's pixel counts relate to the echo's power. The engine works in
+// linear power: beam-aware carving divides a pixel by the beam's power gain, and the keep level
+// is a ratio of powers (docs/carving.md). A sonar that stores its samples on a decibel scale
+// (ARIS: bytes 0..255 for 0..80 dB) gives frames that readers convert on loading, and that
+// writers and displays convert back to the sonar's own counts.
+//
+//   linear:   power = count
+//   decibel:  power = 10^(count / full_scale_count * full_scale_db / 10)
+//             (count 0 is power 1; the full-scale count is 10^(full_scale_db / 10))
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+namespace sonarcarve {
+
+class IntensityScale {
+ public:
+  /// Counts are the echo's power (simulators, most sonars' 16-bit images).
+  static IntensityScale linear() { return {}; }
+  /// Counts 0..full_scale_count span 0..full_scale_db decibels. Throws Error unless both are
+  /// positive.
+  static IntensityScale decibel(double full_scale_db, double full_scale_count);
+
+  bool isLinear() const { return full_scale_db_ == 0.0; }
+  double fullScaleDb() const { return full_scale_db_; }
+  double fullScaleCount() const { return full_scale_count_; }
+  /// In words, for reports: "linear" or "decibel (255 counts = 80 dB)".
+  std::string describe() const;
+
+  /// The echo's power of every count of a CV_32F image (in place; nothing to do if linear).
+  void countsToPower(cv::Mat& image) const;
+  /// The sonar's own counts of a CV_32F power image (a new image; a copy if linear). Powers
+  /// below count 0's (zero included, as a detector's cleared pixels) give count 0.
+  cv::Mat powerToCounts(const cv::Mat& image) const;
+
+  bool operator==(const IntensityScale&) const = default;
+
+ private:
+  double full_scale_db_ = 0.0;  ///< 0: linear
+  double full_scale_count_ = 0.0;
+};
+
+}  // namespace sonarcarve

@@ -1,0 +1,72 @@
+// IntensityScale: a decibel sonar's counts become the echo's power and back, exactly at whole
+// counts; a linear sonar's counts are its power.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/error.h"
+#include "sonar/intensity_scale.h"
+
+namespace sonarcarve {
+namespace {
+
+cv::Mat everyByte() {
+  cv::Mat counts(1, 256, CV_32F);
+  for (int c = 0; c < 256; ++c) {
+    counts.at<float>(0, c) = static_cast<float>(c);
+  }
+  return counts;
+}
+
+TEST(IntensityScale, ArisBytesSpanEightyDecibelsOfPower) {
+  const IntensityScale aris = IntensityScale::decibel(80.0, 255.0);
+  cv::Mat power = everyByte();
+  aris.countsToPower(power);
+  EXPECT_FLOAT_EQ(power.at<float>(0, 0), 1.0f);
+  EXPECT_NEAR(power.at<float>(0, 255), 1e8, 1e8 * 1e-6);
+  // Every byte is 80/255 dB over the one before it: a power ratio of 10^(80/2550).
+  const double step = std::pow(10.0, 80.0 / 2550.0);
+  for (int c = 1; c < 256; ++c) {
+    ASSERT_NEAR(power.at<float>(0, c) / power.at<float>(0, c - 1), step, 1e-5) << c;
+  }
+}
+
+TEST(IntensityScale, WholeCountsComeBackFromTheirPower) {
+  const IntensityScale aris = IntensityScale::decibel(80.0, 255.0);
+  cv::Mat power = everyByte();
+  aris.countsToPower(power);
+  const cv::Mat back = aris.powerToCounts(power);
+  // Far under half a count: rounding on writing gives the byte again.
+  EXPECT_LT(cv::norm(back, everyByte(), cv::NORM_INF), 1e-3);
+}
+
+TEST(IntensityScale, PowersUnderCountZeroAreCountZero) {
+  const IntensityScale scale = IntensityScale::decibel(60.0, 1000.0);
+  const cv::Mat power = (cv::Mat_<float>(1, 3) << 0.0f, 0.5f, 1000.0f);
+  const cv::Mat counts = scale.powerToCounts(power);
+  EXPECT_EQ(counts.at<float>(0, 0), 0.0f);  // a detector's cleared pixel
+  EXPECT_EQ(counts.at<float>(0, 1), 0.0f);
+  EXPECT_NEAR(counts.at<float>(0, 2), 500.0f, 1e-3);  // 30 dB of 60
+}
+
+TEST(IntensityScale, LinearCountsAreThePower) {
+  const IntensityScale linear = IntensityScale::linear();
+  EXPECT_TRUE(linear.isLinear());
+  cv::Mat image = everyByte() * 100.0f;
+  const cv::Mat before = image.clone();
+  linear.countsToPower(image);
+  EXPECT_EQ(cv::norm(image, before, cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(linear.powerToCounts(image), before, cv::NORM_INF), 0.0);
+  EXPECT_EQ(linear.describe(), "linear");
+  EXPECT_EQ(IntensityScale::decibel(80.0, 255.0).describe(), "decibel (255 counts = 80 dB)");
+}
+
+TEST(IntensityScale, NonPositiveOrInfiniteScalesAreRefused) {
+  EXPECT_THROW(IntensityScale::decibel(0.0, 255.0), Error);
+  EXPECT_THROW(IntensityScale::decibel(80.0, -1.0), Error);
+  EXPECT_THROW(IntensityScale::decibel(INFINITY, 255.0), Error);
+  EXPECT_THROW(IntensityScale::decibel(80.0, NAN), Error);
+}
+
+}  // namespace
+}  // namespace sonarcarve
