@@ -37,6 +37,7 @@ struct SimulateOptions {
   double horizontal_beam_width_deg = 0.0;
   double spreading_exponent = 0.0;
   double tvg_exponent = 0.0;
+  std::string intensity = "linear";
   double visible_cell_m = 0.01;
   float reflectivity = 0.8f;
   bool empty_water = false;
@@ -83,6 +84,14 @@ void requireBoundedRays(const SimulateOptions& o, const SonarModel& sonar) {
   }
 }
 
+// The simulated sonar: the paper's geometry, its frames stored in power or, as an ARIS stores
+// them, in bytes of 80/255 dB.
+SonarModel simulatedSonar(const SimulateOptions& o) {
+  return o.intensity == "decibel"
+             ? paperSonar().withIntensityScale(IntensityScale::decibel(80.0, 255.0))
+             : paperSonar();
+}
+
 int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   const std::filesystem::path out(o.out);
   requireBoundedRays(o, paperSonar());
@@ -108,7 +117,7 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
       : isDemoScene(o.scene) ? makeDemoScene(o.scene)
                              : loadSceneMesh(o.scene, o.reflectivity),
       o.scene,
-      paperSonar(),
+      simulatedSonar(o),
       trajectory,
       imaging,
       noiseFrom(o.noise, o.seed),
@@ -234,6 +243,12 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "Time-varied gain of the sonar: returns times r^K; with --spreading-loss, "
                   "the difference is what the images keep of the spreading")
       ->check(CLI::Range(0.0, 8.0))
+      ->capture_default_str();
+  cmd->add_option("--intensity", o->intensity,
+                  "How the frame files store the echo's power: linear (counts are power), "
+                  "decibel (bytes 0..255 for 0..80 dB, as ARIS recordings do; the mission says "
+                  "so and is read back as power)")
+      ->check(CLI::IsMember({"linear", "decibel"}))
       ->capture_default_str();
   cmd->add_option("--visible-cell", o->visible_cell_m,
                   "Ground truth: one seen surface point per cell of this side, m, in "

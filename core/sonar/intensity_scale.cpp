@@ -50,10 +50,13 @@ void IntensityScale::countsToPower(cv::Mat& image) const {
   if (isLinear()) {
     return;
   }
-  // power = exp(count * ln(10) * dB_per_count / 10)
+  // power = exp(count * ln(10) * dB_per_count / 10); count 0, the bottom of the scale, is no
+  // echo at all (a noise-free frame's empty water must stay dark, not become a floor of 1).
+  const cv::Mat no_echo = image <= 0.0f;
   const double nepers_per_count = std::log(10.0) * full_scale_db_ / full_scale_count_ / 10.0;
   image.convertTo(image, CV_32F, nepers_per_count);
   cv::exp(image, image);
+  image.setTo(0.0f, no_echo);
 }
 
 cv::Mat IntensityScale::powerToCounts(const cv::Mat& image) const {
@@ -62,7 +65,7 @@ cv::Mat IntensityScale::powerToCounts(const cv::Mat& image) const {
     return image.clone();
   }
   cv::Mat counts;
-  cv::max(image, 1.0f, counts);  // count 0 is power 1: nothing below it
+  cv::max(image, 1.0f, counts);  // powers up to count 1's, and no echo, are count 0
   cv::log(counts, counts);
   const double counts_per_neper = full_scale_count_ * 10.0 / (full_scale_db_ * std::log(10.0));
   counts.convertTo(counts, CV_32F, counts_per_neper);

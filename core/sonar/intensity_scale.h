@@ -5,8 +5,9 @@
 // writers and displays convert back to the sonar's own counts.
 //
 //   linear:   power = count
-//   decibel:  power = 10^(count / full_scale_count * full_scale_db / 10)
-//             (count 0 is power 1; the full-scale count is 10^(full_scale_db / 10))
+//   decibel:  power = 10^(count / full_scale_count * full_scale_db / 10) for count > 0,
+//             0 for count 0 (the bottom of the scale: no echo); full scale is
+//             10^(full_scale_db / 10)
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -29,9 +30,10 @@ class IntensityScale {
   std::string describe() const;
 
   /// The echo's power of every count of a CV_32F image (in place; nothing to do if linear).
+  /// Decibel counts of 0 or less are no echo: power 0.
   void countsToPower(cv::Mat& image) const;
-  /// The sonar's own counts of a CV_32F power image (a new image; a copy if linear). Powers
-  /// below count 0's (zero included, as a detector's cleared pixels) give count 0.
+  /// The sonar's own counts of a CV_32F power image (a new image; a copy if linear). Decibel:
+  /// powers of 1 (0 dB) and less, zero included (a detector's cleared pixels), give count 0.
   cv::Mat powerToCounts(const cv::Mat& image) const;
 
   bool operator==(const IntensityScale&) const = default;

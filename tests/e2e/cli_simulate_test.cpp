@@ -80,6 +80,52 @@ TEST(CliSimulate, CoherentNoiseAndSpreadingLossAreRecordedInTheSettings) {
   EXPECT_NE(bad.output.find("--spreading-loss"), std::string::npos) << bad.output;
 }
 
+// `--intensity decibel` stores bytes of 80/255 dB, as an ARIS does. Read back, a frame is its
+// linear twin's power (the same seed draws the same image) within what the two roundings
+// allow: half a byte (40/255 dB) on the decibel side, half a count on the linear side.
+TEST(CliSimulate, DecibelFramesHoldTheirLinearTwinsPowerWithinHalfAByte) {
+  test::ScratchDir dir;
+  for (const std::string scale : {"linear", "decibel"}) {
+    const auto r = runCli("simulate --scene riser --max-frames 2 --seed 4 --intensity " + scale +
+                          " --out " + quoted(dir.path() / scale));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  const Mission decibel = readMission(dir.path() / "decibel");
+  const Mission linear = readMission(dir.path() / "linear");
+  EXPECT_EQ(decibel.sonar.intensityScale(), IntensityScale::decibel(80.0, 255.0));
+  EXPECT_TRUE(linear.sonar.intensityScale().isLinear());
+  const cv::Mat bytes =
+      cv::imread((dir.path() / "decibel" / "frames" / "000001.png").string(), cv::IMREAD_UNCHANGED);
+  double most_byte = 0.0;
+  cv::minMaxLoc(bytes, nullptr, &most_byte);
+  EXPECT_LE(most_byte, 255.0);
+  EXPECT_GT(most_byte, 100.0);  // the riser's returns: 40 dB and more
+
+  const cv::Mat p_db = loadFrame(decibel, 1).image;
+  const cv::Mat p_lin = loadFrame(linear, 1).image;
+  const double half_byte = std::pow(10.0, 4.0 / 255.0);  // 10^(40/255 dB / 10)
+  int compared = 0;
+  for (int r = 0; r < p_lin.rows; ++r) {
+    for (int c = 0; c < p_lin.cols; ++c) {
+      const double lin = p_lin.at<float>(r, c);
+      const double db = p_db.at<float>(r, c);
+      if (lin <= 1.0) {  // under 1.5 before rounding: byte 0 to 6
+        ASSERT_LE(db, 1.5 * half_byte) << r << ", " << c;
+        continue;
+      }
+      const double slack = 0.5 / lin + 1e-5;
+      ASSERT_GE(db / lin, (1.0 - slack) / half_byte) << r << ", " << c << ": " << lin;
+      ASSERT_LE(db / lin, (1.0 + slack) * half_byte) << r << ", " << c << ": " << lin;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, p_lin.rows * p_lin.cols / 2);  // the noisy background, mostly
+
+  const auto info = runCli("info " + quoted(dir.path() / "decibel"));
+  EXPECT_NE(info.output.find("intensity  decibel (255 counts = 80 dB)"), std::string::npos)
+      << info.output;
+}
+
 TEST(CliNavError, WritesTheMissionsNavigationWithSeededErrors) {
   // The example mission's navigation, with a constant bias of 0.5 m (standard deviation per
   // axis) and no other error: every sample moves by the same offset, the same for one seed.

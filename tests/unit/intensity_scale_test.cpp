@@ -22,11 +22,12 @@ TEST(IntensityScale, ArisBytesSpanEightyDecibelsOfPower) {
   const IntensityScale aris = IntensityScale::decibel(80.0, 255.0);
   cv::Mat power = everyByte();
   aris.countsToPower(power);
-  EXPECT_FLOAT_EQ(power.at<float>(0, 0), 1.0f);
+  EXPECT_EQ(power.at<float>(0, 0), 0.0f);  // the bottom of the scale: no echo
+  EXPECT_NEAR(power.at<float>(0, 1), std::pow(10.0, 80.0 / 2550.0), 1e-6);
   EXPECT_NEAR(power.at<float>(0, 255), 1e8, 1e8 * 1e-6);
   // Every byte is 80/255 dB over the one before it: a power ratio of 10^(80/2550).
   const double step = std::pow(10.0, 80.0 / 2550.0);
-  for (int c = 1; c < 256; ++c) {
+  for (int c = 2; c < 256; ++c) {
     ASSERT_NEAR(power.at<float>(0, c) / power.at<float>(0, c - 1), step, 1e-5) << c;
   }
 }
