@@ -18,6 +18,7 @@ NoiseModel::NoiseModel(cv::Mat mean, cv::Mat stddev, cv::Mat rayleigh_sigma,
       range_resolution_m_(sonar.range().resolution_m),
       bearings_rad_(sonar.bearings().centres()),
       vertical_aperture_rad_(sonar.verticalAperture()),
+      intensity_scale_(sonar.intensityScale()),
       frames_(frames),
       smoothing_(smoothing) {
   checkGeometry(sonar, "noise model");
@@ -77,6 +78,7 @@ NoiseModel NoiseModel::learn(const Mission& mission, Progress& progress,
   model.range_resolution_m_ = mission.sonar.range().resolution_m;
   model.bearings_rad_ = mission.sonar.bearings().centres();
   model.vertical_aperture_rad_ = mission.sonar.verticalAperture();
+  model.intensity_scale_ = mission.sonar.intensityScale();
   model.frames_ = n;
   model.smoothing_ = smoothing;
   return model;
@@ -102,6 +104,11 @@ void NoiseModel::checkGeometry(const SonarModel& sonar, const std::string& what)
       mismatch("bearing table differs at beam " + std::to_string(j));
     }
   }
+  // Statistics of power read on one scale say nothing of frames read on another.
+  if (!(intensity_scale_ == sonar.intensityScale())) {
+    mismatch("its frames' intensity was " + intensity_scale_.describe() + ", this sonar's is " +
+             sonar.intensityScale().describe());
+  }
 }
 
 void NoiseModel::save(const std::filesystem::path& path) const {
@@ -112,6 +119,8 @@ void NoiseModel::save(const std::filesystem::path& path) const {
   fs << "rows" << mean_.rows << "cols" << mean_.cols << "range_min_m" << range_min_m_
      << "range_resolution_m" << range_resolution_m_ << "vertical_aperture_rad"
      << vertical_aperture_rad_ << "bearings_rad" << cv::Mat(bearings_rad_).t();
+  fs << "intensity_full_scale_db" << intensity_scale_.fullScaleDb() << "intensity_full_scale_count"
+     << intensity_scale_.fullScaleCount();
   fs << "mean" << mean_ << "stddev" << stddev_ << "rayleigh_sigma" << rayleigh_sigma_;
   writeFileAtomically(path, fs.releaseAndGetString());
 }
@@ -158,6 +167,14 @@ NoiseModel NoiseModel::load(const std::filesystem::path& path) {
     fs["range_min_m"] >> model.range_min_m_;
     fs["range_resolution_m"] >> model.range_resolution_m_;
     fs["vertical_aperture_rad"] >> model.vertical_aperture_rad_;
+    // Absent (models written before intensity scales) or 0: linear.
+    const double full_scale_db = fs["intensity_full_scale_db"].empty()
+                                     ? 0.0
+                                     : static_cast<double>(fs["intensity_full_scale_db"]);
+    if (full_scale_db != 0.0) {
+      model.intensity_scale_ = IntensityScale::decibel(
+          full_scale_db, static_cast<double>(fs["intensity_full_scale_count"]));
+    }
     cv::Mat bearings;
     fs["bearings_rad"] >> bearings;
     fs["mean"] >> model.mean_;

@@ -6,7 +6,9 @@
 //
 // File (OpenCV FileStorage YAML, docs/formats.md): format, version, frames, the geometry
 // (rows, cols, range_min_m, range_resolution_m, bearings_rad, vertical_aperture_rad), the
-// smoothing the frames got, and the matrices mean, stddev, rayleigh_sigma (CV_32F).
+// intensity scale the frames were read on (intensity_full_scale_db and _count, both 0 or
+// absent for linear: the statistics are of power), the smoothing the frames got, and the
+// matrices mean, stddev, rayleigh_sigma (CV_32F).
 #pragma once
 
 #include <filesystem>
@@ -49,6 +51,7 @@ class NoiseModel {
   double range_resolution_m_ = 0.0;
   std::vector<double> bearings_rad_;
   double vertical_aperture_rad_ = 0.0;
+  IntensityScale intensity_scale_;
   int frames_ = 0;
   int smoothing_ = 1;
 };

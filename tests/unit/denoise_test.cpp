@@ -184,6 +184,31 @@ TEST(NoiseModel, AModelOfAnotherGeometryIsRefusedWithAClearMessage) {
   EXPECT_THROW(Detector(params, nullptr, sonar), Error);  // no model at all
 }
 
+// A model's statistics are of power read on its sonar's intensity scale: it keeps that scale
+// through its file and refuses a sonar whose counts mean something else.
+TEST(NoiseModel, KeepsItsIntensityScaleAndRefusesAnother) {
+  test::ScratchDir dir;
+  const SonarModel sonar =
+      smallSonar(50, 20).withIntensityScale(IntensityScale::decibel(80.0, 255.0));
+  writeEmptyWater(dir.path() / "empty", sonar, 3);
+  SilentProgress progress;
+  const NoiseModel model = NoiseModel::learn(readMission(dir.path() / "empty"), progress);
+  // The frames (power 200 +- 20) were stored as bytes near 73 and read back as power: every
+  // sample within half a byte, 10^(4/255) - 1 = 3.7 %, so their mean too.
+  EXPECT_NEAR(cv::mean(model.mean())[0], 200.0, 200.0 * 0.037);
+  model.save(dir.path() / "noise.yaml");
+  const NoiseModel back = NoiseModel::load(dir.path() / "noise.yaml");
+  EXPECT_NO_THROW(back.checkGeometry(sonar, "decibel sonar"));
+  try {
+    back.checkGeometry(smallSonar(50, 20), "linear sonar");
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("decibel (255 counts = 80 dB), this sonar's is linear"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(NoiseModel, BrokenFilesGetClearErrors) {
   test::ScratchDir dir;
   EXPECT_THROW(NoiseModel::load(dir.path() / "missing.yaml"), Error);
