@@ -462,7 +462,8 @@ void MapView::updateLegend() {
                         errorColours());
       break;
     case ColourBy::Intensity:
-      legend_->setScale(tr("intensity (counts)"), shown->low, shown->high, viridisColours());
+      legend_->setScale(tr("intensity (%1)").arg(intensity_unit_), shown->low, shown->high,
+                        viridisColours());
       break;
   }
   legend_->move(8, height() - legend_->height() - 8);
@@ -654,6 +655,11 @@ void MapView::setTrack(const std::vector<Eigen::Vector3d>& positions_m) {
   poly->SetLines(pointCells(static_cast<vtkIdType>(positions_m.size()), true));
   vtkPolyDataMapper::SafeDownCast(track_actor_->GetMapper())->SetInputData(poly);
   render();
+}
+
+void MapView::setIntensityUnit(const QString& unit) {
+  intensity_unit_ = unit;
+  updateLegend();
 }
 
 void MapView::setCurrentFrame(const Eigen::Isometry3d& T_world_sonar, const SonarModel& sonar,

@@ -143,6 +143,9 @@ class MapView : public QWidget {
 
   void setColourBy(ColourBy by);
   ColourBy colourBy() const { return colour_by_; }
+  /// What the map's intensities are in, for the legend: "counts" (the default), or the echo's
+  /// power for a sonar whose counts are decibels (sonar/intensity_scale.h).
+  void setIntensityUnit(const QString& unit);
   void setTrack(const std::vector<Eigen::Vector3d>& positions_m);
   /// The current frame: its frustum and its polar image drawn as a fan at elevation 0.
   void setCurrentFrame(const Eigen::Isometry3d& T_world_sonar, const SonarModel& sonar,
@@ -220,6 +223,7 @@ class MapView : public QWidget {
   MapViewBlock surface_;
   Layer layer_ = Layer::Map;
   ColourBy colour_by_ = ColourBy::Intensity;
+  QString intensity_unit_ = QStringLiteral("counts");
   bool has_errors_ = false;
   bool first_points_ = true;
   QTimer redraw_timer_;

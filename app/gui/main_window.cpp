@@ -601,6 +601,9 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   track_view_->setTrack(std::move(nav));
   map_view_->clearMap();
   map_view_->setTrack(sonar_track);
+  // The map holds what carving kept: power, which a decibel sonar's counts are not.
+  map_view_->setIntensityUnit(mission_->sonar.intensityScale().isLinear() ? tr("counts")
+                                                                          : tr("power"));
   timeline_->setFrameTimes(times);
   updateDetector();
   showFrame(0);
