@@ -509,6 +509,10 @@ QString MapView::pickAt(QPoint position, Eigen::Vector3d* ned) {
   if (shown == nullptr || shown->poly->GetNumberOfPoints() == 0) {
     return {};
   }
+  // The pick ray runs between the camera's clipping planes, which a render resets after the
+  // camera moves: reset them here, or a pick made before the next render (a click while the
+  // machine is busy) finds another point of the same column than the one after it.
+  gl_->renderer()->ResetCameraClippingRange();
   auto picker = vtkSmartPointer<vtkPointPicker>::New();
   picker->SetTolerance(0.005);  // of the window's diagonal
   picker->PickFromListOn();
@@ -535,7 +539,7 @@ QString MapView::pickAt(QPoint position, Eigen::Vector3d* ned) {
       what = tr("error %1 cm").arg(100.0 * value, 0, 'f', 1);
       break;
     case ColourBy::Intensity:
-      what = tr("intensity %1 counts").arg(value, 0, 'f', 0);
+      what = tr("intensity %1 %2").arg(value, 0, 'f', 0).arg(intensity_unit_);
       break;
   }
   // A point held at a coarser level of detail: the centroid and the mean of its voxels.
