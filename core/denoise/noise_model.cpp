@@ -106,8 +106,11 @@ void NoiseModel::checkGeometry(const SonarModel& sonar, const std::string& what)
   }
   // Statistics of power read on one scale say nothing of frames read on another.
   if (!(intensity_scale_ == sonar.intensityScale())) {
-    mismatch("its frames' intensity was " + intensity_scale_.describe() + ", this sonar's is " +
-             sonar.intensityScale().describe());
+    throw Error(what, "noise model",
+                "learned on another intensity scale (its frames' was " +
+                    intensity_scale_.describe() + ", this sonar's is " +
+                    sonar.intensityScale().describe() +
+                    "): learn a noise model from empty-water frames of this sonar");
   }
 }
 
@@ -172,8 +175,16 @@ NoiseModel NoiseModel::load(const std::filesystem::path& path) {
                                      ? 0.0
                                      : static_cast<double>(fs["intensity_full_scale_db"]);
     if (full_scale_db != 0.0) {
-      model.intensity_scale_ = IntensityScale::decibel(
-          full_scale_db, static_cast<double>(fs["intensity_full_scale_count"]));
+      if (fs["intensity_full_scale_count"].empty()) {
+        throw Error(file, "intensity_full_scale_count",
+                    "missing: expected the count of intensity_full_scale_db");
+      }
+      try {
+        model.intensity_scale_ = IntensityScale::decibel(
+            full_scale_db, static_cast<double>(fs["intensity_full_scale_count"]));
+      } catch (const Error& e) {
+        throw Error(file, "intensity_" + e.place(), e.message());
+      }
     }
     cv::Mat bearings;
     fs["bearings_rad"] >> bearings;

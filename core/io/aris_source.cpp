@@ -36,7 +36,8 @@ class ArisSource final : public FrameSource {
     frame.time_s = file_->frames().at(index).time_us * 1e-6 + time_offset_s_;
     frame.sonar_id = sonar_id_;
     frame.image = file_->image(index);
-    arisIntensityScale().countsToPower(frame.image);
+    arisIntensityScale().countsToPower(frame.image,
+                                       file_->path().string() + ", frame " + std::to_string(index));
     return frame;
   }
 

@@ -95,7 +95,7 @@ class MissionFolderSource final : public FrameSource {
                       std::to_string(sonar_.rows()) + " range bins x " +
                       std::to_string(sonar_.cols()) + " beams");
     }
-    sonar_.intensityScale().countsToPower(frame.image);
+    sonar_.intensityScale().countsToPower(frame.image, path.string());
     return frame;
   }
 

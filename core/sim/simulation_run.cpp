@@ -1,5 +1,6 @@
 #include "sim/simulation_run.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "common/angles.h"
@@ -124,6 +125,10 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
     // Each frame is noised, encoded and written while the next one renders; two wait at most.
     // (Declared after what its jobs use: on the way out it stops before they go.)
     SerialWorker frame_writer(2);
+    // The sonar saturates at its full scale: 65535 counts of power, or a decibel scale's top.
+    const IntensityScale& scale = mission_sonar.intensityScale();
+    const auto saturation =
+        static_cast<float>(scale.isLinear() ? 65535.0 : std::pow(10.0, scale.fullScaleDb() / 10.0));
     for (std::size_t i = 0; i < frames; ++i) {
       if (progress.cancelled()) {
         result.cancelled = true;
@@ -135,9 +140,9 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
       } else {
         frame.image = renderer.render(trajectory.T_world_sonar(i), keep_visible ? seen : HitSink{});
       }
-      frame_writer.submit([&noise, &writer, i, frame = std::move(frame)]() mutable {
+      frame_writer.submit([&noise, &writer, i, saturation, frame = std::move(frame)]() mutable {
         noise.add(frame.image, i);
-        cv::min(frame.image, 65535.0f, frame.image);
+        cv::min(frame.image, saturation, frame.image);
         writer.addFrame(frame);
       });
       ++result.frames_written;

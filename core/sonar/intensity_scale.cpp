@@ -16,7 +16,8 @@ std::string shortNumber(double v) {
 
 void requireFloatImage(const cv::Mat& image) {
   if (image.type() != CV_32F) {
-    throw Error("intensity scale", "image", "expected a CV_32F image");
+    throw Error("intensity scale", "image",
+                "expected a CV_32F image, got OpenCV type " + std::to_string(image.type()));
   }
 }
 
@@ -26,6 +27,13 @@ IntensityScale IntensityScale::decibel(double full_scale_db, double full_scale_c
   if (!(full_scale_db > 0.0) || !std::isfinite(full_scale_db)) {
     throw Error("intensity scale", "full_scale_db",
                 "expected a positive number of decibels, got " + shortNumber(full_scale_db));
+  }
+  if (full_scale_db > kMostDecibels) {
+    throw Error("intensity scale", "full_scale_db",
+                "expected at most " + shortNumber(kMostDecibels) +
+                    " dB (the power must fit a "
+                    "float), got " +
+                    shortNumber(full_scale_db));
   }
   if (!(full_scale_count > 0.0) || !std::isfinite(full_scale_count)) {
     throw Error("intensity scale", "full_scale_count",
@@ -45,10 +53,18 @@ std::string IntensityScale::describe() const {
          " dB)";
 }
 
-void IntensityScale::countsToPower(cv::Mat& image) const {
+void IntensityScale::countsToPower(cv::Mat& image, const std::string& what) const {
   requireFloatImage(image);
   if (isLinear()) {
     return;
+  }
+  double most = 0.0;
+  cv::Point at;
+  cv::minMaxLoc(image, nullptr, &most, nullptr, &at);
+  if (most > full_scale_count_) {
+    throw Error(
+        what, "range bin " + std::to_string(at.y) + ", beam " + std::to_string(at.x),
+        "count " + shortNumber(most) + " is over the sonar's full scale (" + describe() + ")");
   }
   // power = exp(count * ln(10) * dB_per_count / 10); count 0, the bottom of the scale, is no
   // echo at all (a noise-free frame's empty water must stay dark, not become a floor of 1).

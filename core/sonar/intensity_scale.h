@@ -17,10 +17,13 @@ namespace sonarcarve {
 
 class IntensityScale {
  public:
+  /// The widest decibel scale: its full-scale power, 10^30, fits a float with room to sum.
+  static constexpr double kMostDecibels = 300.0;
+
   /// Counts are the echo's power (simulators, most sonars' 16-bit images).
   static IntensityScale linear() { return {}; }
   /// Counts 0..full_scale_count span 0..full_scale_db decibels. Throws Error unless both are
-  /// positive.
+  /// positive and the full scale's power fits a float (at most kMostDecibels).
   static IntensityScale decibel(double full_scale_db, double full_scale_count);
 
   bool isLinear() const { return full_scale_db_ == 0.0; }
@@ -30,8 +33,9 @@ class IntensityScale {
   std::string describe() const;
 
   /// The echo's power of every count of a CV_32F image (in place; nothing to do if linear).
-  /// Decibel counts of 0 or less are no echo: power 0.
-  void countsToPower(cv::Mat& image) const;
+  /// Decibel counts of 0 or less are no echo: power 0. Throws Error (naming `what` and the
+  /// pixel) on a decibel count over the full scale.
+  void countsToPower(cv::Mat& image, const std::string& what) const;
   /// The sonar's own counts of a CV_32F power image (a new image; a copy if linear). Decibel:
   /// powers of 1 (0 dB) and less, zero included (a detector's cleared pixels), give count 0.
   cv::Mat powerToCounts(const cv::Mat& image) const;

@@ -207,6 +207,20 @@ TEST(NoiseModel, KeepsItsIntensityScaleAndRefusesAnother) {
               std::string::npos)
         << e.what();
   }
+  // A file with the decibels but not their count names the key it lacks.
+  std::string text = test::readText(dir.path() / "noise.yaml");
+  const auto at = text.find("intensity_full_scale_count");
+  ASSERT_NE(at, std::string::npos);
+  text.erase(at, text.find('\n', at) - at);
+  test::writeText(dir.path() / "broken.yaml", text);
+  try {
+    NoiseModel::load(dir.path() / "broken.yaml");
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.yaml: intensity_full_scale_count: missing"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(NoiseModel, BrokenFilesGetClearErrors) {

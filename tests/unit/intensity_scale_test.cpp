@@ -21,7 +21,7 @@ cv::Mat everyByte() {
 TEST(IntensityScale, ArisBytesSpanEightyDecibelsOfPower) {
   const IntensityScale aris = IntensityScale::decibel(80.0, 255.0);
   cv::Mat power = everyByte();
-  aris.countsToPower(power);
+  aris.countsToPower(power, "bytes");
   EXPECT_EQ(power.at<float>(0, 0), 0.0f);  // the bottom of the scale: no echo
   EXPECT_NEAR(power.at<float>(0, 1), std::pow(10.0, 80.0 / 2550.0), 1e-6);
   EXPECT_NEAR(power.at<float>(0, 255), 1e8, 1e8 * 1e-6);
@@ -35,7 +35,7 @@ TEST(IntensityScale, ArisBytesSpanEightyDecibelsOfPower) {
 TEST(IntensityScale, WholeCountsComeBackFromTheirPower) {
   const IntensityScale aris = IntensityScale::decibel(80.0, 255.0);
   cv::Mat power = everyByte();
-  aris.countsToPower(power);
+  aris.countsToPower(power, "bytes");
   const cv::Mat back = aris.powerToCounts(power);
   // Far under half a count: rounding on writing gives the byte again.
   EXPECT_LT(cv::norm(back, everyByte(), cv::NORM_INF), 1e-3);
@@ -55,14 +55,33 @@ TEST(IntensityScale, LinearCountsAreThePower) {
   EXPECT_TRUE(linear.isLinear());
   cv::Mat image = everyByte() * 100.0f;
   const cv::Mat before = image.clone();
-  linear.countsToPower(image);
+  linear.countsToPower(image, "image");
   EXPECT_EQ(cv::norm(image, before, cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(linear.powerToCounts(image), before, cv::NORM_INF), 0.0);
   EXPECT_EQ(linear.describe(), "linear");
   EXPECT_EQ(IntensityScale::decibel(80.0, 255.0).describe(), "decibel (255 counts = 80 dB)");
 }
 
+TEST(IntensityScale, CountsOverFullScaleAreRefusedNamingThePixel) {
+  // 1228 bytes of 80/255 dB would be 385 dB: infinite as a float.
+  cv::Mat image = cv::Mat::zeros(4, 3, CV_32F);
+  image.at<float>(2, 1) = 1228.0f;
+  try {
+    IntensityScale::decibel(80.0, 255.0).countsToPower(image, "f.png");
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("f.png: range bin 2, beam 1: count 1228 is over the "
+                                         "sonar's full scale (decibel (255 counts = 80 dB))"),
+              std::string::npos)
+        << e.what();
+  }
+  image.at<float>(2, 1) = 255.0f;  // full scale itself is a count
+  EXPECT_NO_THROW(IntensityScale::decibel(80.0, 255.0).countsToPower(image, "f.png"));
+}
+
 TEST(IntensityScale, NonPositiveOrInfiniteScalesAreRefused) {
+  EXPECT_THROW(IntensityScale::decibel(301.0, 255.0), Error);  // 10^30.1: too near a float's limit
+  EXPECT_NO_THROW(IntensityScale::decibel(300.0, 255.0));
   EXPECT_THROW(IntensityScale::decibel(0.0, 255.0), Error);
   EXPECT_THROW(IntensityScale::decibel(80.0, -1.0), Error);
   EXPECT_THROW(IntensityScale::decibel(INFINITY, 255.0), Error);

@@ -64,13 +64,14 @@ void roundTrip(const SonarModel& sonar) {
   cv::RNG rng(5);
   for (int i = 0; i < 4; ++i) {
     Frame f{1000.1 + 0.5 * i, sonar.id(), cv::Mat(sonar.rows(), sonar.cols(), CV_32F)};
-    // Whole counts the sonar can hold, loaded as power as a reader does.
+    // Whole counts the sonar can hold (rounding below keeps a decibel sonar's at most its full
+    // scale), loaded as power as a reader does.
     const IntensityScale& scale = sonar.intensityScale();
-    rng.fill(f.image, cv::RNG::UNIFORM, 0, scale.isLinear() ? 65536 : scale.fullScaleCount() + 1);
+    rng.fill(f.image, cv::RNG::UNIFORM, 0, scale.isLinear() ? 65536 : scale.fullScaleCount() + 0.5);
     cv::Mat rounded;
     f.image.convertTo(rounded, CV_16U);
     rounded.convertTo(f.image, CV_32F);
-    scale.countsToPower(f.image);
+    scale.countsToPower(f.image, "frame");
     writer.addFrame(f);
     frames.push_back(f);
   }
