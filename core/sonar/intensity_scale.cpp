@@ -31,9 +31,7 @@ IntensityScale IntensityScale::decibel(double full_scale_db, double full_scale_c
   if (full_scale_db > kMostDecibels) {
     throw Error("intensity scale", "full_scale_db",
                 "expected at most " + shortNumber(kMostDecibels) +
-                    " dB (the power must fit a "
-                    "float), got " +
-                    shortNumber(full_scale_db));
+                    " dB (the power must fit a float), got " + shortNumber(full_scale_db));
   }
   if (!(full_scale_count > 0.0) || !std::isfinite(full_scale_count)) {
     throw Error("intensity scale", "full_scale_count",
