@@ -19,7 +19,7 @@ namespace {
 constexpr double kArisVerticalApertureDeg = 14.0;
 
 // ARIS samples are logarithmic: bytes 0..255 span 0..80 dB (the ARIS file SDK's
-// docs/understanding-aris-data.md). Frames are loaded as power.
+// docs/understanding-aris-data.md). loadFrame gives them as power.
 IntensityScale arisIntensityScale() {
   return IntensityScale::decibel(80.0, 255.0);
 }
@@ -36,8 +36,6 @@ class ArisSource final : public FrameSource {
     frame.time_s = file_->frames().at(index).time_us * 1e-6 + time_offset_s_;
     frame.sonar_id = sonar_id_;
     frame.image = file_->image(index);
-    arisIntensityScale().countsToPower(frame.image,
-                                       file_->path().string() + ", frame " + std::to_string(index));
     return frame;
   }
 

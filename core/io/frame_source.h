@@ -30,7 +30,8 @@ class FrameSource {
   /// What kind of recording this is, in words ("mission folder", "oculus messages", ...).
   virtual std::string kind() const = 0;
   virtual std::size_t size() const = 0;
-  /// Frame `index` with its time on the navigation's clock. Throws Error naming the file and
+  /// Frame `index` with its time on the navigation's clock, in the sonar's counts (loadFrame
+  /// converts them to power by the sonar's intensity scale). Throws Error naming the file and
   /// the frame if it cannot be read or does not match the sonar.
   virtual Frame load(std::size_t index) const = 0;
 };

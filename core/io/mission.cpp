@@ -68,7 +68,7 @@ std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& path, bool 
 }
 
 // The frames of a mission folder: 16-bit PNGs named by the frame index, holding the sonar's
-// counts (converted to power by its intensity scale).
+// counts.
 class MissionFolderSource final : public FrameSource {
  public:
   explicit MissionFolderSource(const Mission& mission)
@@ -95,7 +95,6 @@ class MissionFolderSource final : public FrameSource {
                       std::to_string(sonar_.rows()) + " range bins x " +
                       std::to_string(sonar_.cols()) + " beams");
     }
-    sonar_.intensityScale().countsToPower(frame.image, path.string());
     return frame;
   }
 
@@ -184,7 +183,10 @@ Frame loadFrame(const Mission& mission, std::size_t index) {
                 "the mission has no frame source");
   }
   Frame frame = mission.source->load(index);
-  frame.time_s = mission.frames.at(index).time_s;
+  const FrameRecord& record = mission.frames.at(index);
+  frame.time_s = record.time_s;
+  // Every source gives the sonar's counts; the engine works on power.
+  mission.sonar.intensityScale().countsToPower(frame.image, mission.folder.string(), record.file);
   return frame;
 }
 

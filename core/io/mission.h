@@ -65,8 +65,9 @@ struct FrameProblem {
 /// going backwards.
 Mission readMission(const std::filesystem::path& folder_or_yaml);
 
-/// Loads frame `index` through the mission's source; throws Error naming the file if the image
-/// is unreadable, truncated, corrupt or does not match the sonar model's size.
+/// Loads frame `index` through the mission's source, as power (sonar/intensity_scale.h); throws
+/// Error naming the file if the image is unreadable, truncated, corrupt, over the sonar's full
+/// scale or does not match the sonar model's size.
 Frame loadFrame(const Mission& mission, std::size_t index);
 
 /// The source that reads a mission folder's PNG frames (readMission attaches it).

@@ -1,18 +1,12 @@
 #include "sonar/intensity_scale.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "common/error.h"
+#include "common/number_text.h"
 
 namespace sonarcarve {
 namespace {
-
-std::string shortNumber(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 void requireFloatImage(const cv::Mat& image) {
   if (image.type() != CV_32F) {
@@ -26,16 +20,16 @@ void requireFloatImage(const cv::Mat& image) {
 IntensityScale IntensityScale::decibel(double full_scale_db, double full_scale_count) {
   if (!(full_scale_db > 0.0) || !std::isfinite(full_scale_db)) {
     throw Error("intensity scale", "full_scale_db",
-                "expected a positive number of decibels, got " + shortNumber(full_scale_db));
+                "expected a positive number of decibels, got " + shortestNumber(full_scale_db));
   }
   if (full_scale_db > kMostDecibels) {
     throw Error("intensity scale", "full_scale_db",
-                "expected at most " + shortNumber(kMostDecibels) +
-                    " dB (the power must fit a float), got " + shortNumber(full_scale_db));
+                "expected at most " + shortestNumber(kMostDecibels) +
+                    " dB (the power must fit a float), got " + shortestNumber(full_scale_db));
   }
   if (!(full_scale_count > 0.0) || !std::isfinite(full_scale_count)) {
     throw Error("intensity scale", "full_scale_count",
-                "expected a positive count, got " + shortNumber(full_scale_count));
+                "expected a positive count, got " + shortestNumber(full_scale_count));
   }
   IntensityScale scale;
   scale.full_scale_db_ = full_scale_db;
@@ -47,11 +41,12 @@ std::string IntensityScale::describe() const {
   if (isLinear()) {
     return "linear";
   }
-  return "decibel (" + shortNumber(full_scale_count_) + " counts = " + shortNumber(full_scale_db_) +
-         " dB)";
+  return "decibel (" + shortestNumber(full_scale_count_) +
+         " counts = " + shortestNumber(full_scale_db_) + " dB)";
 }
 
-void IntensityScale::countsToPower(cv::Mat& image, const std::string& what) const {
+void IntensityScale::countsToPower(cv::Mat& image, const std::string& what,
+                                   const std::string& place) const {
   requireFloatImage(image);
   if (isLinear()) {
     return;
@@ -61,8 +56,10 @@ void IntensityScale::countsToPower(cv::Mat& image, const std::string& what) cons
   cv::minMaxLoc(image, nullptr, &most, nullptr, &at);
   if (most > full_scale_count_) {
     throw Error(
-        what, "range bin " + std::to_string(at.y) + ", beam " + std::to_string(at.x),
-        "count " + shortNumber(most) + " is over the sonar's full scale (" + describe() + ")");
+        what,
+        (place.empty() ? "" : place + ", ") + "range bin " + std::to_string(at.y) + ", beam " +
+            std::to_string(at.x),
+        "count " + shortestNumber(most) + " is over the sonar's full scale (" + describe() + ")");
   }
   // power = exp(count * ln(10) * dB_per_count / 10); count 0, the bottom of the scale, is no
   // echo at all (a noise-free frame's empty water must stay dark, not become a floor of 1).

@@ -33,9 +33,9 @@ class IntensityScale {
   std::string describe() const;
 
   /// The echo's power of every count of a CV_32F image (in place; nothing to do if linear).
-  /// Decibel counts of 0 or less are no echo: power 0. Throws Error (naming `what` and the
-  /// pixel) on a decibel count over the full scale.
-  void countsToPower(cv::Mat& image, const std::string& what) const;
+  /// Decibel counts of 0 or less are no echo: power 0. Throws Error (naming `what`, `place`
+  /// if given, and the pixel) on a decibel count over the full scale.
+  void countsToPower(cv::Mat& image, const std::string& what, const std::string& place = {}) const;
   /// The sonar's own counts of a CV_32F power image (a new image; a copy if linear). Decibel:
   /// powers of 1 (0 dB) and less, zero included (a detector's cleared pixels), give count 0.
   cv::Mat powerToCounts(const cv::Mat& image) const;
