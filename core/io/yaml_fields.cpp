@@ -97,14 +97,6 @@ std::vector<double> YamlFields::numbers(const YAML::Node& node, const std::strin
 }  // namespace sonarcarve
 
 namespace sonarcarve {
-std::string shortestNumber(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
-}
-}  // namespace sonarcarve
-
-namespace sonarcarve {
 std::string shortestDegrees(double angle_rad) {
   const double deg = radToDeg(angle_rad);
   // From one degree up, plain decimals ("100", not general's "1e+02"); below, general, which

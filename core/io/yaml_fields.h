@@ -3,8 +3,10 @@
 #pragma once
 
 #include <yaml-cpp/yaml.h>
+
 #include <string>
 #include <vector>
+#include "common/number_text.h"
 
 namespace sonarcarve {
 
@@ -35,11 +37,6 @@ class YamlFields {
   std::string file_;
 };
 
-}  // namespace sonarcarve
-
-namespace sonarcarve {
-/// The shortest text that reads back as exactly `value` ("0.02", not "0.0200000000000000004").
-std::string shortestNumber(double value);
 }  // namespace sonarcarve
 
 namespace sonarcarve {
