@@ -70,18 +70,12 @@ NoiseModel NoiseModel::learn(const Mission& mission, Progress& progress,
   cv::sqrt(cv::max(variance, 0.0), stddev);
   cv::Mat sigma;
   cv::sqrt(second / 2.0, sigma);
-  NoiseModel model;
-  mean.convertTo(model.mean_, CV_32F);
-  stddev.convertTo(model.stddev_, CV_32F);
-  sigma.convertTo(model.rayleigh_sigma_, CV_32F);
-  model.range_min_m_ = mission.sonar.range().min_m;
-  model.range_resolution_m_ = mission.sonar.range().resolution_m;
-  model.bearings_rad_ = mission.sonar.bearings().centres();
-  model.vertical_aperture_rad_ = mission.sonar.verticalAperture();
-  model.intensity_scale_ = mission.sonar.intensityScale();
-  model.frames_ = n;
-  model.smoothing_ = smoothing;
-  return model;
+  cv::Mat mean32, stddev32, sigma32;
+  mean.convertTo(mean32, CV_32F);
+  stddev.convertTo(stddev32, CV_32F);
+  sigma.convertTo(sigma32, CV_32F);
+  return NoiseModel(std::move(mean32), std::move(stddev32), std::move(sigma32), mission.sonar, n,
+                    smoothing);
 }
 
 void NoiseModel::checkGeometry(const SonarModel& sonar, const std::string& what) const {
