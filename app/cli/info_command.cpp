@@ -18,6 +18,7 @@
 #include "io/mission_summary.h"
 #include "io/oculus_log.h"
 #include "io/ros_bag.h"
+#include "sonar/bearing_deblur.h"
 
 namespace sonarcarve::cli {
 namespace {
@@ -52,6 +53,7 @@ nlohmann::json summaryJson(const SonarModel& sonar, const MissionSummary& s) {
         {"bearing_max_deg", radToDeg(sonar.bearings().centre(sonar.cols() - 1))},
         {"field_of_view_deg", radToDeg(sonar.bearings().fieldOfView())},
         {"vertical_aperture_deg", radToDeg(sonar.verticalAperture())},
+        {"horizontal_beam_width_deg", radToDeg(sonar.horizontalBeamWidth())},
         {"intensity_scale", sonar.intensityScale().describe()}}},
       {"navigation",
        {{"samples", s.nav_samples},
@@ -75,6 +77,10 @@ void printText(const SonarModel& sonar, const MissionSummary& s) {
               radToDeg(sonar.bearings().centre(0)),
               radToDeg(sonar.bearings().centre(sonar.cols() - 1)),
               radToDeg(sonar.bearings().fieldOfView()));
+  if (sonar.horizontalBeamWidth() > 0.0) {
+    std::printf("  beams      %.2f deg wide (-3 dB)%s\n", radToDeg(sonar.horizontalBeamWidth()),
+                BearingDeblur(sonar).active() ? ": their blur across bearing is taken out" : "");
+  }
   std::printf("  aperture   %.2f deg vertical (-3 dB, %s)\n", radToDeg(sonar.verticalAperture()),
               sonar.elevationBeam() == ElevationBeam::Clipped ? "clipped" : "sinc");
   std::printf("  intensity  %s\n", sonar.intensityScale().describe().c_str());

@@ -230,8 +230,9 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->check(CLI::IsMember({"clipped", "realistic"}))
       ->capture_default_str();
   cmd->add_option("--horizontal-beam-width", o->horizontal_beam_width_deg,
-                  "Realistic beam: -3 dB width of each beam in bearing, deg; 0 = the bearing "
-                  "spacing")
+                  "Realistic beam: -3 dB width of each beam in bearing, deg, written to "
+                  "mission.yaml so that reconstruction takes the blur out; 0 = the bearing "
+                  "spacing, not written")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--spreading-loss", o->spreading_exponent,

@@ -104,9 +104,18 @@ SonarModel sonarFromYaml(const YAML::Node& node, const YamlFields& fields,
   }
   const IntensityScale intensity =
       intensityFromYaml(node["intensity"], fields, path + ".intensity");
+  double beam_width_deg = 0.0;
+  if (const YAML::Node width = node["horizontal_beam_width_deg"]) {
+    beam_width_deg = fields.positive(width, path + ".horizontal_beam_width_deg");
+    if (degToRad(beam_width_deg) >= bearings.fieldOfView()) {
+      fields.fail(width, path + ".horizontal_beam_width_deg",
+                  "expected less than the field of view");
+    }
+  }
   try {
     return SonarModel(id, range, std::move(bearings), degToRad(aperture_deg))
         .withElevationBeam(beam)
+        .withHorizontalBeamWidth(degToRad(beam_width_deg))
         .withIntensityScale(intensity);
   } catch (const Error& e) {
     fields.fail(node, path, e.place() + ": " + e.message());
@@ -140,6 +149,10 @@ void emitSonar(YAML::Emitter& out, const SonarModel& sonar) {
       << shortestDegrees(sonar.verticalAperture());
   out << YAML::Key << "beam_pattern" << YAML::Value
       << (sonar.elevationBeam() == ElevationBeam::Clipped ? "clipped" : "sinc");
+  if (sonar.horizontalBeamWidth() > 0.0) {  // not given: left out
+    out << YAML::Key << "horizontal_beam_width_deg" << YAML::Value
+        << shortestDegrees(sonar.horizontalBeamWidth());
+  }
   if (!sonar.intensityScale().isLinear()) {  // linear, the default, is left implicit
     out << YAML::Key << "intensity" << YAML::Value;
     emitIntensity(out, sonar.intensityScale());

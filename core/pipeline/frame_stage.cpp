@@ -88,7 +88,8 @@ DenoisedFrames::DenoisedFrames(const Mission& mission, const SonarModel& sonar,
     : mission_(mission),
       detector_(std::make_shared<const Detector>(noise.detector, noise.model, sonar)),
       model_(noise.model),
-      background_sigma_(detector_->backgroundSigma()) {}
+      background_sigma_(detector_->backgroundSigma()),
+      deblur_(sonar) {}
 
 Frame DenoisedFrames::load(std::size_t index, BeforeDetection* before) const {
   Frame frame = loadFrame(mission_, index);
@@ -97,7 +98,12 @@ Frame DenoisedFrames::load(std::size_t index, BeforeDetection* before) const {
     before->sigma = background_sigma_;
   }
   frame.image = detector_->apply(frame.image);
+  frame.image = deblur_.apply(frame.image, exactDark());
   return frame;
+}
+
+std::string DenoisedFrames::bearingDeblur() const {
+  return deblur_.describe(exactDark());
 }
 
 }  // namespace sonarcarve

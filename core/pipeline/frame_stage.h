@@ -11,6 +11,7 @@
 #include "common/progress.h"
 #include "denoise/detector.h"
 #include "io/mission.h"
+#include "sonar/bearing_deblur.h"
 
 namespace sonarcarve {
 
@@ -50,7 +51,8 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
                              const DetectorParams& detector, const std::string& given_path,
                              std::shared_ptr<const NoiseModel> given, Progress& progress);
 
-/// Reads a frame of the mission and removes its noise. Thread safe.
+/// Reads a frame of the mission, removes its noise and, where the sonar's beams are wider
+/// than their spacing, their blur across bearing (sonar/bearing_deblur.h). Thread safe.
 class DenoisedFrames {
  public:
   /// Builds the detector; throws Error naming the parameter on a problem.
@@ -60,12 +62,17 @@ class DenoisedFrames {
   /// background's standard deviation (for seabed-aware carving); left empty otherwise.
   Frame load(std::size_t index, BeforeDetection* before = nullptr) const;
   const Detector& detector() const { return *detector_; }
+  /// Whether and how the frames' blur across bearing is taken out, in words.
+  std::string bearingDeblur() const;
 
  private:
   const Mission& mission_;
   std::shared_ptr<const Detector> detector_;
   std::shared_ptr<const NoiseModel> model_;
+  // Whether a dark pixel means no return (no detector ran).
+  bool exactDark() const { return detector_->params().mode == DetectorMode::None; }
   cv::Mat background_sigma_;  // ztest: the detector's, per pixel before its box filter
+  BearingDeblur deblur_;      // beams wider than their spacing: their blur taken out
 };
 
 }  // namespace sonarcarve

@@ -119,6 +119,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   result.detector = std::string(toString(noise.detector.mode));
   result.denoising = noise.reason;
   const DenoisedFrames frames(mission_, sonar_, noise);
+  result.bearing_deblur = frames.bearingDeblur();
   // The keep level bounds what frames carve: a run that only resolves a loaded map's surface
   // (startFrom without carving) reads no frame for it.
   if (carvesMainLobe(sonar_, stage.carve) && carve_frames_) {

@@ -44,6 +44,7 @@ struct ReconstructionResult {
   std::string denoising;       ///< which noise model it used and why, in words
   std::string shadow_carving;  ///< whether frames carved shadow-aware and why, in words
   std::string seabed_carving;  ///< seabed-aware carving: off and why, or in how many frames
+  std::string bearing_deblur;  ///< whether the beams' blur across bearing was taken out, in words
   KeepLevel keep_level;        ///< beam-aware carving's keep level (level 0 when not beam-aware)
   /// Pose refinement of each carved frame (empty when it is off).
   std::vector<FramePoseRefinement> refinement;

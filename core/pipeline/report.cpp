@@ -19,6 +19,7 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                            {"denoising", result.denoising},
                            {"shadow_aware_carving", result.shadow_carving},
                            {"seabed_aware_carving", result.seabed_carving},
+                           {"bearing_deblur", result.bearing_deblur},
                            {"smoothing", params.detector.smoothing},
                            {"z", params.detector.z},
                            {"frames_used", result.frames_used},
@@ -83,6 +84,9 @@ std::vector<std::string> describeRunChoices(const ReconstructionResult& result,
   }
   if (!result.seabed_carving.empty()) {
     lines.push_back("seabed-aware carving: " + result.seabed_carving);
+  }
+  if (!result.bearing_deblur.empty()) {
+    lines.push_back("bearing deblur: " + result.bearing_deblur);
   }
   if (result.keep_level.frames > 0) {
     lines.push_back(describeKeepLevel(result.keep_level, dynamic_range_db));

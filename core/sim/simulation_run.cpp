@@ -111,10 +111,13 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   const bool keep_visible = request.imaging.visible_cell_m > 0.0;
   VisibleSurface visible(keep_visible ? request.imaging.visible_cell_m : 0.01);
   const HitSink seen = [&](std::span<const Eigen::Vector3f> points) { visible.add(points); };
-  // A clipped beam images nothing outside the aperture: the mission says so, for carving.
-  const SonarModel mission_sonar = request.imaging.beam == SimulatedBeam::Clipped
-                                       ? request.sonar.withElevationBeam(ElevationBeam::Clipped)
-                                       : request.sonar;
+  // A clipped beam images nothing outside the aperture: the mission says so, for carving. A
+  // realistic one given a horizontal beam width says how wide, so that its blur across
+  // bearing can be taken out (sonar/bearing_deblur.h).
+  const bool clipped = request.imaging.beam == SimulatedBeam::Clipped;
+  const SonarModel mission_sonar =
+      clipped ? request.sonar.withElevationBeam(ElevationBeam::Clipped)
+              : request.sonar.withHorizontalBeamWidth(request.imaging.horizontal_beam_width_rad);
   MissionWriter writer(
       request.output,
       scene_name + (request.empty_water ? " (empty water)" : "") + " / " + request.trajectory.kind,

@@ -59,6 +59,16 @@ SonarModel::SonarModel(std::string id, RangeBins range, BearingTable bearings,
   }
 }
 
+SonarModel SonarModel::withHorizontalBeamWidth(double width_rad) const {
+  if (!(width_rad >= 0.0) || !std::isfinite(width_rad) || width_rad >= bearings_.fieldOfView()) {
+    throw Error("sonar model", "horizontal beam width",
+                "expected an angle >= 0 and under the field of view");
+  }
+  SonarModel other = *this;
+  other.horizontal_beam_width_rad_ = width_rad;
+  return other;
+}
+
 Polar SonarModel::pixelCentre(const Pixel& pixel) const {
   return Polar{range_.centre(pixel.row), bearings_.centre(pixel.col), 0.0};
 }

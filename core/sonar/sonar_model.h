@@ -66,6 +66,13 @@ class SonarModel {
     other.elevation_beam_ = beam;
     return other;
   }
+  /// Full width of each beam across bearing between its -3 dB points (radians), when the
+  /// sonar declares it; 0: not given, each beam taken as wide as its spacing. Real beams
+  /// are often wider than their spacing (an Oculus M750d: 1 degree, 0.25 apart), which blurs
+  /// the image across bearing (sonar/bearing_deblur.h undoes it).
+  double horizontalBeamWidth() const { return horizontal_beam_width_rad_; }
+  /// The same sonar with a horizontal beam width (>= 0, finite; throws Error otherwise).
+  SonarModel withHorizontalBeamWidth(double width_rad) const;
   /// How the sonar's counts relate to the echo's power (frames are loaded as power).
   const IntensityScale& intensityScale() const { return intensity_scale_; }
   SonarModel withIntensityScale(IntensityScale scale) const {
@@ -91,6 +98,7 @@ class SonarModel {
   BearingTable bearings_;
   BeamPattern beam_pattern_;
   ElevationBeam elevation_beam_ = ElevationBeam::MainLobe;
+  double horizontal_beam_width_rad_ = 0.0;
   IntensityScale intensity_scale_;
 };
 

@@ -95,6 +95,20 @@ TEST_F(MissionErrors, InvalidIntensityScale) {
   }
 }
 
+TEST_F(MissionErrors, InvalidHorizontalBeamWidth) {
+  const std::string original = readText(mission_ / "mission.yaml");
+  const std::pair<std::string, std::string> cases[] = {
+      {"-1", "sonar.horizontal_beam_width_deg: expected a positive number"},
+      {"wide", "sonar.horizontal_beam_width_deg: expected a finite number"},
+      {"400", "sonar.horizontal_beam_width_deg: expected less than the field of view"}};
+  for (const auto& [width, message] : cases) {
+    writeText(mission_ / "mission.yaml", original);
+    edit("mission.yaml", "vertical_aperture_deg:",
+         "horizontal_beam_width_deg: " + width + "\n  vertical_aperture_deg:");
+    expectReadError({"mission.yaml", message});
+  }
+}
+
 TEST_F(MissionErrors, MissingNavigationFile) {
   std::filesystem::remove(mission_ / "nav.csv");
   expectReadError({"nav.csv: not found: expected a CSV table"});

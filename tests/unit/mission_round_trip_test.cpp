@@ -37,6 +37,7 @@ void expectSameMission(const SonarModel& sonar, const Mounting& mounting, const 
   EXPECT_EQ(read.sonar.verticalAperture(), sonar.verticalAperture());
   EXPECT_EQ(read.sonar.elevationBeam(), sonar.elevationBeam());
   EXPECT_EQ(read.sonar.intensityScale(), sonar.intensityScale());
+  EXPECT_NEAR(read.sonar.horizontalBeamWidth(), sonar.horizontalBeamWidth(), 1e-12);
   EXPECT_TRUE(read.mounting.T_vehicle_sonar().isApprox(mounting.T_vehicle_sonar(), 1e-15));
   ASSERT_EQ(read.nav.samples().size(), nav.samples().size());
   for (std::size_t i = 0; i < nav.samples().size(); ++i) {
@@ -99,6 +100,12 @@ TEST(MissionFormat, AClippedBeamIsWrittenAndReadBack) {
 TEST(MissionFormat, ADecibelSonarIsStoredInItsOwnCountsAndReadBackAsTheSamePower) {
   // 80 dB of power do not fit a 16-bit PNG; the sonar's bytes do, and give the power back.
   roundTrip(test::paperSonar().withIntensityScale(IntensityScale::decibel(80.0, 255.0)));
+}
+
+TEST(MissionFormat, ASonarsHorizontalBeamWidthIsKept) {
+  // Beams five times as wide as their spacing; a mission that does not say has none (0).
+  roundTrip(test::paperSonar().withHorizontalBeamWidth(degToRad(1.0)));
+  EXPECT_EQ(readMission(test::exampleMission()).sonar.horizontalBeamWidth(), 0.0);
 }
 
 TEST(MissionFormat, TheExampleMissionReadsCompletely) {
