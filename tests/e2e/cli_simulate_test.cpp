@@ -9,6 +9,7 @@
 #include "common/angles.h"
 #include "io/mission.h"
 #include "io/nav_csv.h"
+#include "pipeline/frame_stage.h"
 #include "sonar/bearing_deblur.h"
 #include "support/cli_runner.h"
 #include "support/test_support.h"
@@ -131,7 +132,8 @@ TEST(CliSimulate, DecibelFramesHoldTheirLinearTwinsPowerWithinHalfAByte) {
 // `--horizontal-beam-width` beams (1 degree over 0.2 degree spacing) blur the riser across
 // bearing; the mission says how wide they are, and the engine's deblurring takes the blur out:
 // the energy the wide beams put where the narrow-beam twin (same seed) images nothing falls to
-// under a quarter, and none is lost.
+// under a quarter, and the frame keeps its energy (within 1 %: the residue under half a count
+// is set dark).
 TEST(CliSimulate, WideBeamsAreDeclaredAndTheirBlurTakenOut) {
   test::ScratchDir dir;
   for (const std::string width : {"0", "1"}) {
@@ -145,18 +147,20 @@ TEST(CliSimulate, WideBeamsAreDeclaredAndTheirBlurTakenOut) {
   const Mission wide = readMission(dir.path() / "1");
   EXPECT_EQ(narrow.sonar.horizontalBeamWidth(), 0.0);
   EXPECT_NEAR(wide.sonar.horizontalBeamWidth(), degToRad(1.0), 1e-12);
-  const BearingDeblur deblur(wide.sonar);
-  ASSERT_TRUE(deblur.active());
+  ASSERT_TRUE(BearingDeblur(wide.sonar).active());
   const cv::Mat twin = loadFrame(narrow, 1).image;
   const cv::Mat blurred = loadFrame(wide, 1).image;
-  const cv::Mat sharp = deblur.apply(blurred, true);
+  // The frames as the engine reads them (no noise: no detector).
+  const cv::Mat sharp = DenoisedFrames(wide, wide.sonar, NoiseChoice{}).load(1).image;
+  // Whole counts cannot show under half a count: the deconvolution's residue there is dark.
+  EXPECT_EQ(cv::countNonZero((sharp > 0.0f) & (sharp < 0.5f)), 0);
   const cv::Mat nothing = twin < 0.5f;
   const auto haloShare = [&](const cv::Mat& image) {
     cv::Mat halo = image.clone();
     halo.setTo(0.0f, ~nothing);
     return cv::sum(halo)[0] / cv::sum(image)[0];
   };
-  EXPECT_NEAR(cv::sum(sharp)[0], cv::sum(blurred)[0], 1e-3 * cv::sum(blurred)[0]);
+  EXPECT_NEAR(cv::sum(sharp)[0], cv::sum(blurred)[0], 1e-2 * cv::sum(blurred)[0]);
   const double before = haloShare(blurred);
   const double after = haloShare(sharp);
   EXPECT_GT(before, 0.01);
