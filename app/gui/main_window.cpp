@@ -650,6 +650,7 @@ void MainWindow::updateDetector() {
   }
   try {
     detector_ = std::make_shared<const Detector>(p.detector, noise_model_, mission_->sonar);
+    deblur_ = std::make_shared<const BearingDeblur>(carvingSonar(*mission_, p));
   } catch (const std::exception& e) {
     log(tr("denoised view unavailable: %1").arg(describe(e)));
   }
@@ -662,7 +663,7 @@ void MainWindow::showFrame(int index) {
   // Reading and denoising a frame takes tens of milliseconds: a worker does it and the GUI
   // thread only draws the result, unless the user has asked for another frame since.
   frame_job_.start(
-      [mission = mission_, detector = detector_, index](JobContext&) {
+      [mission = mission_, detector = detector_, deblur = deblur_, index](JobContext&) {
         ShownFrame shown;
         shown.index = index;
         Frame frame = loadFrame(*mission, static_cast<std::size_t>(index));
@@ -672,7 +673,12 @@ void MainWindow::showFrame(int index) {
         shown.raw = scale.powerToCounts(frame.image);
         shown.range = widgets::displayRange(shown.raw);
         if (detector) {
-          shown.denoised = scale.powerToCounts(detector->apply(frame.image));
+          // What carving reads: the detector's output, with the beams' blur taken out.
+          cv::Mat denoised = detector->apply(frame.image);
+          if (deblur) {
+            denoised = deblur->apply(denoised, darkPixelsAreExact(detector->params()));
+          }
+          shown.denoised = scale.powerToCounts(denoised);
         }
         return shown;
       },

@@ -25,6 +25,7 @@
 #include "map_view.h"
 #include "pipeline/reconstruction.h"
 #include "reconstruction_runner.h"
+#include "sonar/bearing_deblur.h"
 
 class QAction;
 class QComboBox;
@@ -163,6 +164,7 @@ class MainWindow : public QMainWindow {
   std::vector<RunRecord> runs_;  // this mission's runs, oldest first (kept in the session)
   std::shared_ptr<const ReconstructionResult> result_;
   std::shared_ptr<const Detector> detector_;
+  std::shared_ptr<const BearingDeblur> deblur_;  // the beams' blur, as carving takes it out
   std::shared_ptr<const NoiseModel> noise_model_;
   std::string noise_model_path_;
   ReconstructionParams run_params_;

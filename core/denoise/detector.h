@@ -57,6 +57,12 @@ struct DetectorParams {
   void validate() const;
 };
 
+/// Whether a dark pixel of the frames out of this detector means that nothing returned there
+/// (no detector ran: the frames' own zeros), rather than a return under the detection level.
+inline bool darkPixelsAreExact(const DetectorParams& resolved) {
+  return resolved.mode == DetectorMode::None;
+}
+
 class Detector {
  public:
   /// `model` is required by ztest (Error otherwise) and checked against

@@ -4,9 +4,6 @@
 #include <cstdio>
 #include <optional>
 
-#include <opencv2/imgproc.hpp>
-
-#include "carve/carve_params.h"
 #include "common/error.h"
 #include "denoise/mission_noise_model.h"
 
@@ -101,15 +98,7 @@ Frame DenoisedFrames::load(std::size_t index, BeforeDetection* before) const {
     before->sigma = background_sigma_;
   }
   frame.image = detector_->apply(frame.image);
-  if (deblur_.active()) {
-    frame.image = deblur_.apply(frame.image, exactDark());
-    if (exactDark()) {
-      // What the deconvolution leaves under half a count, where the sonar's whole counts read
-      // 0, is dark: left lit, such faint residue made every frame carve to the main lobe's
-      // edge (carving 45 -> 80 ms a frame).
-      cv::threshold(frame.image, frame.image, kDarkPixelCounts, 0.0, cv::THRESH_TOZERO);
-    }
-  }
+  frame.image = deblur_.apply(frame.image, exactDark());
   return frame;
 }
 

@@ -70,7 +70,7 @@ class DenoisedFrames {
   std::shared_ptr<const Detector> detector_;
   std::shared_ptr<const NoiseModel> model_;
   // Whether a dark pixel means no return (no detector ran).
-  bool exactDark() const { return detector_->params().mode == DetectorMode::None; }
+  bool exactDark() const { return darkPixelsAreExact(detector_->params()); }
   cv::Mat background_sigma_;  // ztest: the detector's, per pixel before its box filter
   BearingDeblur deblur_;      // beams wider than their spacing: their blur taken out
 };

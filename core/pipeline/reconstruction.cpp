@@ -39,18 +39,21 @@ FrameSelection selectionOf(const ReconstructionParams& params) {
   return {params.first_frame, params.last_frame, params.stride};
 }
 
-SonarModel carvingSonar(const Mission& mission, const ReconstructionParams& params) {
-  return params.vertical_aperture_rad > 0.0
-             ? mission.sonar.withVerticalAperture(params.vertical_aperture_rad)
-             : mission.sonar;
-}
-
 const ReconstructionParams& validated(const ReconstructionParams& params) {
   params.validate();
   return params;
 }
 
 }  // namespace
+
+SonarModel carvingSonar(const Mission& mission, const ReconstructionParams& params) {
+  SonarModel sonar = params.vertical_aperture_rad > 0.0
+                         ? mission.sonar.withVerticalAperture(params.vertical_aperture_rad)
+                         : mission.sonar;
+  return params.horizontal_beam_width_rad > 0.0
+             ? sonar.withHorizontalBeamWidth(params.horizontal_beam_width_rad)
+             : sonar;
+}
 
 std::vector<std::size_t> selectedFrames(const Mission& mission,
                                         const ReconstructionParams& params) {
@@ -130,7 +133,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
       return result;
     }
     stage.carve.keep_level = result.keep_level.level;
-    stage.carve.dark_pixels = noise.detector.mode == DetectorMode::None
+    stage.carve.dark_pixels = darkPixelsAreExact(noise.detector)
                                   ? CarveParams::DarkPixels::Exact
                                   : CarveParams::DarkPixels::BelowDetection;
     const double used = effectiveKeepLevel(stage.carve);

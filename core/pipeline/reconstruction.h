@@ -97,6 +97,10 @@ class Pipeline {
   ThreadPool& pool_;
 };
 
+/// The sonar a run carves with: the mission's, with the parameters' vertical aperture and
+/// horizontal beam width where they give one.
+SonarModel carvingSonar(const Mission& mission, const ReconstructionParams& params);
+
 /// Indices of the frames the parameters select (first, last, stride).
 std::vector<std::size_t> selectedFrames(const Mission& mission, const ReconstructionParams& params);
 

@@ -60,6 +60,9 @@ struct ReconstructionParams {
   /// Vertical aperture used for carving, radians; 0 = the sonar model's own. Analysts
   /// narrow it when the data sheet's -3 dB aperture overstates what returns energy.
   double vertical_aperture_rad = 0.0;
+  /// Width of each beam in bearing (-3 dB), radians; 0 = the sonar model's own. For logs that
+  /// do not say how wide their beams are (sonar/bearing_deblur.h).
+  double horizontal_beam_width_rad = 0.0;
   /// Fast engine, experimental: carve a second time, letting each frame update only the
   /// voxels it can see (not hidden behind the first carving's surface), so that surfaces
   /// shadowed from some views are not carved away by them. On the riser demo it gained 0.7 %

@@ -5,16 +5,28 @@
 #include <cstdio>
 #include <numbers>
 
+#include <opencv2/imgproc.hpp>
+
+#include "common/error.h"
 #include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
 namespace {
 
 // A pattern that keeps more than this share of a beam's power in the beam itself does not
-// blur the image enough to take out: a beam as wide as its spacing keeps 94 % (1.6 %, -18 dB,
-// in each neighbour and 1.4 % in the next), as a mission that gives no width is taken to;
-// one 1.5 times as wide keeps 65 %.
+// blur the image enough to take out. Averaged over each beam's interval (as the simulator's
+// sub-rays sample it), a beam half as wide as its spacing keeps 94 %, one as wide 79 % (9 % in
+// each neighbour) and one five times as wide 19 %.
 constexpr double kSharpShare = 0.9;
+// Sub-samples of the pattern across one beam's interval.
+constexpr int kTapSamples = 16;
+// Exact frames: the sonar's whole counts read 0 under half a count (carve/carve_params.h,
+// kDarkPixelCounts), so the deconvolution's residue there is dark. Left lit, it let every
+// frame carve to the main lobe's edge (docs/benchmarks.md).
+constexpr float kHalfCount = 0.5f;
+// Estimates that fall this far under their row's brightest are dark: repeated products
+// would otherwise reach denormal floats, slow to compute with.
+constexpr float kNegligible = 1e-7f;
 
 double medianSpacing(const BearingTable& table) {
   std::vector<double> gaps;
@@ -53,17 +65,20 @@ class RowDeconvolution {
       data[i] = (c >= 0 && c < cols_ && (exact || obs_[i] > 0.0f)) ? 1.0f : 0.0f;
     }
     convolve(data, norm_);
-    if (!exact) {
-      // A dark pixel among lit ones starts at its neighbours' mean, weighted by the pattern,
-      // so that it can hold its share of their blur (a missed return); started at 0 it would
-      // stay there, and its lit neighbours would take its share.
-      convolve(obs_, blur_);
-      for (std::size_t i = 0; i < padded; ++i) {
-        if (!(obs_[i] > 0.0f) && norm_[i] > 0.0f) {
-          est_[i] = blur_[i] / norm_[i];
-        }
+    // Unknown sources start at their lit neighbours' mean, weighted by the pattern, so that
+    // they can hold their share of the blur; started at 0 they would stay there, and their
+    // neighbours would take their share. They are a detector's dark pixels (a missed return)
+    // and, in every frame, the bearings just beyond the fan, whose returns its edge beams
+    // still image.
+    convolve(obs_, blur_);
+    for (int c = lo - half_; c <= hi + half_; ++c) {
+      const auto i = static_cast<std::size_t>(c - lo + half_);
+      const bool unknown = c < 0 || c >= cols_ || (!exact && !(obs_[i] > 0.0f));
+      if (unknown && norm_[i] > 0.0f) {
+        est_[i] = blur_[i] / norm_[i];
       }
     }
+    const float floor = kNegligible * *std::max_element(obs_.begin(), obs_.end());
     ratio_.assign(padded, 0.0f);
     for (int it = 0; it < iterations; ++it) {
       convolve(est_, blur_);
@@ -72,7 +87,8 @@ class RowDeconvolution {
       }
       convolve(ratio_, blur_);
       for (std::size_t i = 0; i < padded; ++i) {
-        est_[i] = est_[i] > 0.0f ? est_[i] * blur_[i] / norm_[i] : 0.0f;
+        const float e = est_[i] > 0.0f && norm_[i] > 0.0f ? est_[i] * blur_[i] / norm_[i] : 0.0f;
+        est_[i] = e > floor ? e : 0.0f;
       }
     }
     for (int i = 0; i < n; ++i) {  // behind a detector, dark pixels stay dark
@@ -88,12 +104,12 @@ class RowDeconvolution {
     out.assign(v.size(), 0.0f);
     for (int d = -half_; d <= half_; ++d) {
       const float w = k_[static_cast<std::size_t>(d + half_)];
-      const int from = std::max(0, -d);
-      const int to = std::min(size, size - d);
-      const float* __restrict in = v.data() + d;
-      float* __restrict o = out.data();
-      for (int i = from; i < to; ++i) {
-        o[i] += w * in[i];
+      const int from = std::max(0, -d);  // out[from + j] takes v[from + d + j]
+      const int count = std::min(size, size - d) - from;
+      const float* __restrict in = v.data() + (from + d);
+      float* __restrict o = out.data() + from;
+      for (int j = 0; j < count; ++j) {
+        o[j] += w * in[j];
       }
     }
   }
@@ -116,10 +132,15 @@ BearingDeblur::BearingDeblur(const SonarModel& sonar)
   // The pattern to its second null, as far as the simulator traces it (sim/sonar_simulator.h).
   const SincSquaredBeam beam(width);
   const int half = std::min(static_cast<int>(beam.null(2) / spacing), sonar.cols() - 1);
+  // Each tap: the pattern's mean over that beam's interval of bearing.
   std::vector<double> weights;
   double total = 0.0;
   for (int d = -half; d <= half; ++d) {
-    weights.push_back(beam.power(d * spacing));
+    double sum = 0.0;
+    for (int s = 0; s < kTapSamples; ++s) {
+      sum += beam.power((d - 0.5 + (s + 0.5) / kTapSamples) * spacing);
+    }
+    weights.push_back(sum / kTapSamples);
     total += weights.back();
   }
   if (weights[static_cast<std::size_t>(half)] / total > kSharpShare) {
@@ -143,8 +164,9 @@ std::string BearingDeblur::describe(bool exact_dark) const {
   } else {
     std::snprintf(text, sizeof text,
                   "%.2f degree beams, %.2f degree apart: their blur across bearing taken out of "
-                  "every frame (%d iterations)",
-                  width_deg, spacing_deg, exact_dark ? kExactIterations : kDetectedIterations);
+                  "every frame (%d iterations%s)",
+                  width_deg, spacing_deg, exact_dark ? kExactIterations : kDetectedIterations,
+                  exact_dark ? "; what is left under half a count is dark" : "");
   }
   return text;
 }
@@ -152,6 +174,9 @@ std::string BearingDeblur::describe(bool exact_dark) const {
 cv::Mat BearingDeblur::apply(const cv::Mat& image, bool exact_dark) const {
   if (!active()) {
     return image;
+  }
+  if (image.type() != CV_32FC1) {
+    throw Error("bearing deblur", "frame", "expected a single-channel float image");
   }
   cv::Mat out = cv::max(image, 0.0f);
   const int h = half();
@@ -169,6 +194,9 @@ cv::Mat BearingDeblur::apply(const cv::Mat& image, bool exact_dark) const {
     const int lo = std::max(0, static_cast<int>(first - row) - h);
     const int hi = std::min(out.cols - 1, static_cast<int>(last.base() - row) - 1 + h);
     deconvolution.run(row, lo, hi, exact_dark, iterations);
+  }
+  if (exact_dark) {
+    cv::threshold(out, out, kHalfCount, 0.0, cv::THRESH_TOZERO);
   }
   return out;
 }

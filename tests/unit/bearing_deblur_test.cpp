@@ -42,8 +42,7 @@ cv::Mat blurred(const std::vector<float>& truth, const BearingDeblur& deblur) {
 TEST(BearingDeblur, OnlyBeamsWiderThanTheirSpacingBlur) {
   EXPECT_FALSE(BearingDeblur(sonarWithBeams(0.0)).active());  // not given
   EXPECT_FALSE(BearingDeblur(sonarWithBeams(0.1)).active());  // half the spacing
-  EXPECT_FALSE(BearingDeblur(sonarWithBeams(0.2)).active());  // as wide: -18 dB next door
-  EXPECT_TRUE(BearingDeblur(sonarWithBeams(0.3)).active());
+  EXPECT_TRUE(BearingDeblur(sonarWithBeams(0.2)).active());   // as wide: 9 % next door
   const BearingDeblur wide(sonarWithBeams(1.0));
   ASSERT_TRUE(wide.active());
   // The sinc^2 pattern to its second null: 2.26 widths, 11 beams of 0.2 degree.
@@ -54,9 +53,20 @@ TEST(BearingDeblur, OnlyBeamsWiderThanTheirSpacingBlur) {
     EXPECT_FLOAT_EQ(k[static_cast<std::size_t>(wide.half() + d)],
                     k[static_cast<std::size_t>(wide.half() - d)]);
   }
-  // Half power at half the width, 2.5 beams off the axis.
+  // Each tap is the pattern's mean over its beam's interval: 3 beams off, [0.5, 0.7] degree,
+  // just past the -3 dB point (0.5 degree).
   const SincSquaredBeam beam(degToRad(1.0));
-  EXPECT_NEAR(beam.power(degToRad(0.5)), 0.5, 0.01);
+  double mean = 0.0;
+  double centre = 0.0;
+  for (int s = 0; s < 1000; ++s) {
+    mean += beam.power(degToRad(0.5 + 0.2 * (s + 0.5) / 1000)) / 1000;
+    centre += beam.power(degToRad(-0.1 + 0.2 * (s + 0.5) / 1000)) / 1000;
+  }
+  EXPECT_NEAR(
+      k[static_cast<std::size_t>(wide.half() + 3)] / k[static_cast<std::size_t>(wide.half())],
+      mean / centre, 1e-3);
+  EXPECT_LT(mean, 0.5);
+  EXPECT_GT(mean, 0.25);
   const cv::Mat image(3, 650, CV_32F, cv::Scalar(5.0f));
   EXPECT_EQ(cv::norm(BearingDeblur(sonarWithBeams(0.0)).apply(image, true), image), 0.0);
 }
@@ -98,6 +108,20 @@ TEST(BearingDeblur, AnExtendedSurfaceKeepsItsBrightnessAndLosesItsHalo) {
     if (b < 197 || b > 302) {
       ASSERT_LT(out.at<float>(0, b), kKeepShare * 400.0f) << "beam " << b;
     }
+  }
+}
+
+TEST(BearingDeblur, ReturnsFromBeyondTheFanStayBeyondIt) {
+  // A target 3 beams past the fan's edge lights its edge beams; the deconvolution must not
+  // gather its light into the edge beam as if it came from inside the fan.
+  const BearingDeblur deblur(sonarWithBeams(1.0));
+  std::vector<float> truth(650 + 3, 0.0f);  // the fan and 3 beams beyond its last
+  truth[652] = 1000.0f;
+  std::fill(truth.begin() + 100, truth.begin() + 120, 1000.0f);  // something inside it too
+  const cv::Mat seen = blurred(truth, deblur).colRange(0, 650).clone();
+  const cv::Mat out = deblur.apply(seen, true);
+  for (int b = 640; b < 650; ++b) {
+    ASSERT_LE(out.at<float>(0, b), seen.at<float>(0, b) + 1.0f) << "beam " << b;
   }
 }
 

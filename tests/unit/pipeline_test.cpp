@@ -179,6 +179,24 @@ TEST_F(Pipeline, ApertureOverrideNarrowsWhatEachFrameCarves) {
   EXPECT_LT(r_narrow.map_bytes, r_own.map_bytes);
 }
 
+TEST_F(Pipeline, BeamWidthOverrideTakesTheBeamsBlurOut) {
+  // The example mission gives no beam width (64 beams, 0.95 degree apart): nothing is taken
+  // out unless an analyst says how wide the beams are.
+  SilentProgress progress;
+  const Mission m = readMission(mission());
+  ReconstructionParams own;
+  own.mesh_enabled = false;
+  ReconstructionParams wide = own;
+  wide.horizontal_beam_width_rad = degToRad(3.0);
+  const ReconstructionResult r_own = runPipeline(m, own, progress);
+  const ReconstructionResult r_wide = runPipeline(m, wide, progress);
+  EXPECT_EQ(r_own.bearing_deblur, "off: the mission gives no horizontal beam width");
+  EXPECT_NE(r_wide.bearing_deblur.find("3.00 degree beams"), std::string::npos)
+      << r_wide.bearing_deblur;
+  EXPECT_NE(r_wide.bearing_deblur.find("taken out"), std::string::npos) << r_wide.bearing_deblur;
+  EXPECT_NE(r_wide.occupied_voxels, r_own.occupied_voxels);
+}
+
 TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
   test::ScratchDir dir;
   ReconstructionParams p;
@@ -189,6 +207,7 @@ TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
   p.stride = 2;
   p.min_views = 7;
   p.vertical_aperture_rad = degToRad(12.0);
+  p.horizontal_beam_width_rad = degToRad(1.0);
   test::writeText(dir.path() / "p.yaml", p.toYaml());
   const ReconstructionParams back =
       ReconstructionParams::fromYamlFile((dir.path() / "p.yaml").string());
@@ -201,10 +220,12 @@ TEST(ReconstructionParamsYaml, RoundTripsAndRefusesBadValues) {
   EXPECT_EQ(back.stride, 2u);
   EXPECT_EQ(back.min_views, 7u);
   EXPECT_NEAR(back.vertical_aperture_rad, degToRad(12.0), 1e-12);
+  EXPECT_NEAR(back.horizontal_beam_width_rad, degToRad(1.0), 1e-12);
   for (const std::string bad :
        {"voxel_size_m: -1\n", "engine: magic\n", "frames: {stride: 0}\n",
         "region: {min_m: [0, 0, 0], max_m: [-1, 1, 1]}\n", "range_min_m: 5\nrange_max_m: 4\n",
-        "vertical_aperture_deg: 200\n", "vertical_aperture_deg: -3\n"}) {
+        "vertical_aperture_deg: 200\n", "vertical_aperture_deg: -3\n",
+        "horizontal_beam_width_deg: -1\n", "horizontal_beam_width_deg: 45\n"}) {
     test::writeText(dir.path() / "bad.yaml", bad);
     EXPECT_THROW(ReconstructionParams::fromYamlFile((dir.path() / "bad.yaml").string()), Error)
         << bad;
