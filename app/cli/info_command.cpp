@@ -53,7 +53,9 @@ nlohmann::json summaryJson(const SonarModel& sonar, const MissionSummary& s) {
         {"bearing_max_deg", radToDeg(sonar.bearings().centre(sonar.cols() - 1))},
         {"field_of_view_deg", radToDeg(sonar.bearings().fieldOfView())},
         {"vertical_aperture_deg", radToDeg(sonar.verticalAperture())},
-        {"horizontal_beam_width_deg", radToDeg(sonar.horizontalBeamWidth())},
+        {"horizontal_beam_width_deg",  // null: the mission does not say
+         sonar.horizontalBeamWidth() > 0.0 ? nlohmann::json(radToDeg(sonar.horizontalBeamWidth()))
+                                           : nlohmann::json(nullptr)},
         {"intensity_scale", sonar.intensityScale().describe()}}},
       {"navigation",
        {{"samples", s.nav_samples},
