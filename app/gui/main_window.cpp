@@ -620,6 +620,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
 
 void MainWindow::updateDetector() {
   detector_.reset();
+  deblur_.reset();
   if (!mission_) {
     return;
   }
@@ -649,8 +650,8 @@ void MainWindow::updateDetector() {
     return;  // still loading
   }
   try {
-    detector_ = std::make_shared<const Detector>(p.detector, noise_model_, mission_->sonar);
     deblur_ = std::make_shared<const BearingDeblur>(carvingSonar(*mission_, p));
+    detector_ = std::make_shared<const Detector>(p.detector, noise_model_, mission_->sonar);
   } catch (const std::exception& e) {
     log(tr("denoised view unavailable: %1").arg(describe(e)));
   }
@@ -672,13 +673,8 @@ void MainWindow::showFrame(int index) {
         const IntensityScale& scale = mission->sonar.intensityScale();
         shown.raw = scale.powerToCounts(frame.image);
         shown.range = widgets::displayRange(shown.raw);
-        if (detector) {
-          // What carving reads: the detector's output, with the beams' blur taken out.
-          cv::Mat denoised = detector->apply(frame.image);
-          if (deblur) {
-            denoised = deblur->apply(denoised, darkPixelsAreExact(detector->params()));
-          }
-          shown.denoised = scale.powerToCounts(denoised);
+        if (detector && deblur) {  // set together by updateDetector
+          shown.denoised = scale.powerToCounts(denoiseFrame(*detector, *deblur, frame.image));
         }
         return shown;
       },

@@ -23,6 +23,7 @@
 #include "io/mission.h"
 #include "io/run_record.h"
 #include "map_view.h"
+#include "pipeline/frame_stage.h"
 #include "pipeline/reconstruction.h"
 #include "reconstruction_runner.h"
 #include "sonar/bearing_deblur.h"

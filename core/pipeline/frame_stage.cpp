@@ -83,6 +83,10 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
   return choice;
 }
 
+cv::Mat denoiseFrame(const Detector& detector, const BearingDeblur& deblur, const cv::Mat& image) {
+  return deblur.apply(detector.apply(image), darkPixelsAreExact(detector.params()));
+}
+
 DenoisedFrames::DenoisedFrames(const Mission& mission, const SonarModel& sonar,
                                const NoiseChoice& noise)
     : mission_(mission),
@@ -97,8 +101,7 @@ Frame DenoisedFrames::load(std::size_t index, BeforeDetection* before) const {
     before->excess = frame.image - model_->mean();  // both CV_32F (sonar/frame.h)
     before->sigma = background_sigma_;
   }
-  frame.image = detector_->apply(frame.image);
-  frame.image = deblur_.apply(frame.image, exactDark());
+  frame.image = denoiseFrame(*detector_, deblur_, frame.image);
   return frame;
 }
 

@@ -51,6 +51,10 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
                              const DetectorParams& detector, const std::string& given_path,
                              std::shared_ptr<const NoiseModel> given, Progress& progress);
 
+/// What carving reads of a raw frame (power): the detector's output with the beams' blur
+/// across bearing taken out.
+cv::Mat denoiseFrame(const Detector& detector, const BearingDeblur& deblur, const cv::Mat& image);
+
 /// Reads a frame of the mission, removes its noise and, where the sonar's beams are wider
 /// than their spacing, their blur across bearing (sonar/bearing_deblur.h). Thread safe.
 class DenoisedFrames {

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/angles.h"
 #include "common/error.h"
 #include "sonar/beam_pattern.h"
 
@@ -156,8 +156,8 @@ std::string BearingDeblur::describe(bool exact_dark) const {
     return "off: the mission gives no horizontal beam width";
   }
   char text[160];
-  const double width_deg = width_rad_ * 180.0 / std::numbers::pi;
-  const double spacing_deg = spacing_rad_ * 180.0 / std::numbers::pi;
+  const double width_deg = radToDeg(width_rad_);
+  const double spacing_deg = radToDeg(spacing_rad_);
   if (!active()) {
     std::snprintf(text, sizeof text, "off: %.2f degree beams, %.2f degree apart, hardly blur",
                   width_deg, spacing_deg);

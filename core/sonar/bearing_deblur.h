@@ -36,7 +36,7 @@ class BearingDeblur {
   explicit BearingDeblur(const SonarModel& sonar);
 
   /// Whether the sonar's beams blur the image: a declared width whose pattern puts more than
-  /// 1 % of a beam's power into its neighbours. Otherwise apply() returns the image as it is.
+  /// 10 % of a beam's power into its neighbours. Otherwise apply() returns the image as it is.
   bool active() const { return !kernel_.empty(); }
   /// The pattern's weights from beam -half() to +half(), summing to 1 (empty if inactive).
   const std::vector<float>& kernel() const { return kernel_; }
