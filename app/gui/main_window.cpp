@@ -30,6 +30,7 @@
 #include <QToolBar>
 #include <QUrl>
 #include <QVBoxLayout>
+#include <numeric>
 
 #include "accuracy_panel.h"
 #include "carve/occupancy_export.h"
@@ -605,6 +606,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   map_view_->setIntensityUnit(mission_->sonar.intensityScale().isLinear() ? tr("counts")
                                                                           : tr("power"));
   timeline_->setFrameTimes(times);
+  readBeamWidth();
   updateDetector();
   showFrame(0);
   addRecent(QString::fromStdString(mission_->folder.string()));
@@ -616,6 +618,28 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
           .arg(mission_->sonar.rows()));
   startRun();
   return true;
+}
+
+void MainWindow::readBeamWidth() {
+  read_beam_width_rad_ = 0.0;
+  beam_width_job_.discard();
+  if (mission_->sonar.horizontalBeamWidth() > 0.0) {
+    return;
+  }
+  std::vector<std::size_t> all(mission_->frames.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  beam_width_job_.start(
+      [mission = mission_, all](JobContext& context) {
+        return chooseBeamWidth(*mission, mission->sonar, all, context).sonar.horizontalBeamWidth();
+      },
+      [this](double width) {
+        read_beam_width_rad_ = width;
+        if (width > 0.0) {
+          updateDetector();
+          showFrame(timeline_->currentFrame());
+        }
+      },
+      [](const JobError&) {});  // a run reads it again, and its log says why
 }
 
 void MainWindow::updateDetector() {
@@ -650,7 +674,11 @@ void MainWindow::updateDetector() {
     return;  // still loading
   }
   try {
-    deblur_ = std::make_shared<const BearingDeblur>(carvingSonar(*mission_, p));
+    const SonarModel sonar = carvingSonar(*mission_, p);
+    deblur_ = std::make_shared<const BearingDeblur>(
+        sonar.horizontalBeamWidth() > 0.0 || !(read_beam_width_rad_ > 0.0)
+            ? sonar
+            : sonar.withHorizontalBeamWidth(read_beam_width_rad_));
     detector_ = std::make_shared<const Detector>(p.detector, noise_model_, mission_->sonar);
   } catch (const std::exception& e) {
     log(tr("denoised view unavailable: %1").arg(describe(e)));

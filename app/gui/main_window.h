@@ -140,6 +140,7 @@ class MainWindow : public QMainWindow {
   void showFrame(int index);
   void drawFrame(const ShownFrame& shown);
   void paramsEdited();
+  void readBeamWidth();
   void updateDetector();
   /// A session, a vendor log (through the import dialog) or a mission, by what `path` is.
   void openPath(const QString& path);
@@ -201,6 +202,10 @@ class MainWindow : public QMainWindow {
   // Off the GUI thread: reading a noise model, reading and denoising the frame shown, and
   // importing a vendor log (with its progress dialog).
   BackgroundJob noise_model_job_;
+  // A mission that does not say how wide its beams are: the width read from its frames for the
+  // denoised view, as a run reads it (0 until read, or when none can be).
+  BackgroundJob beam_width_job_;
+  double read_beam_width_rad_ = 0.0;
   BackgroundJob frame_job_;
   BackgroundJob import_job_;
   BackgroundJob learn_job_;

@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "denoise/mission_noise_model.h"
+#include "sonar/beam_width_estimate.h"
 
 namespace sonarcarve {
 
@@ -52,10 +53,7 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
                         : "detector " + std::string(toString(detector.mode)) + ", no noise model";
     return choice;
   }
-  std::vector<std::size_t> indices;
-  for (const PosedFrame& f : frames) {
-    indices.push_back(f.index);
-  }
+  const std::vector<std::size_t> indices = indicesOf(frames);
   MissionNoiseStats stats;
   std::optional<NoiseModel> learned;
   try {
@@ -81,6 +79,44 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
                                            : std::string()) +
                   ")";
   return choice;
+}
+
+std::vector<std::size_t> indicesOf(const std::vector<PosedFrame>& frames) {
+  std::vector<std::size_t> indices;
+  for (const PosedFrame& f : frames) {
+    indices.push_back(f.index);
+  }
+  return indices;
+}
+
+BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
+                                const std::vector<std::size_t>& indices, Progress& progress) {
+  if (sonar.horizontalBeamWidth() > 0.0) {
+    return {sonar, ""};
+  }
+  const std::size_t count = std::min(indices.size(), kBeamWidthFrames);
+  BearingSpectrum spectrum(sonar.cols());
+  std::size_t read = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (progress.cancelled()) {
+      throw Cancelled();
+    }
+    try {
+      spectrum.add(loadFrame(mission, indices[k * indices.size() / count]).image);
+      ++read;
+    } catch (const Error&) {
+      // a frame that cannot be read is reported where carving reads it
+    }
+    progress.report("beam width", k + 1, count);
+  }
+  const BeamWidthEstimate estimate = estimateBeamWidth(spectrum, sonar.bearings());
+  const std::string frames = " from " + std::to_string(read) + " frames: ";
+  if (!(estimate.width_rad > 0.0)) {
+    return {sonar, "the mission gives no horizontal beam width, and none was read" + frames +
+                       estimate.reason};
+  }
+  return {sonar.withHorizontalBeamWidth(estimate.width_rad),
+          "width read" + frames + estimate.reason};
 }
 
 cv::Mat denoiseFrame(const Detector& detector, const BearingDeblur& deblur, const cv::Mat& image) {

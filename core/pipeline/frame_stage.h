@@ -51,6 +51,23 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
                              const DetectorParams& detector, const std::string& given_path,
                              std::shared_ptr<const NoiseModel> given, Progress& progress);
 
+/// The sonar whose beams' blur across bearing is taken out of the frames, and why.
+struct BeamWidthChoice {
+  SonarModel sonar;
+  std::string reason;  ///< empty when the sonar declares its width (or an analyst gave one)
+};
+
+/// `sonar` as it is when it declares its beams' width; otherwise with the width read from up
+/// to kBeamWidthFrames of the frames `indices`, evenly spread (sonar/beam_width_estimate.h),
+/// when one can be read. Frames that cannot be read are passed over (the carving stage reports
+/// them). Throws Cancelled.
+inline constexpr std::size_t kBeamWidthFrames = 24;
+BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
+                                const std::vector<std::size_t>& indices, Progress& progress);
+
+/// The mission's indices of placed frames.
+std::vector<std::size_t> indicesOf(const std::vector<PosedFrame>& frames);
+
 /// What carving reads of a raw frame (power): the detector's output with the beams' blur
 /// across bearing taken out.
 cv::Mat denoiseFrame(const Detector& detector, const BearingDeblur& deblur, const cv::Mat& image);

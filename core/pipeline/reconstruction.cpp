@@ -121,8 +121,20 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   }
   result.detector = std::string(toString(noise.detector.mode));
   result.denoising = noise.reason;
-  const DenoisedFrames frames(mission_, sonar_, noise);
-  result.bearing_deblur = frames.bearingDeblur();
+  // Beams wider than their spacing blur each row across bearing: taken out of the frames,
+  // with the width the sonar declares or, failing that, one read from the frames.
+  std::optional<BeamWidthChoice> beams;
+  try {
+    beams = chooseBeamWidth(mission_, sonar_, indicesOf(posed), progress);
+  } catch (const Cancelled&) {
+    result.cancelled = true;
+    return result;
+  }
+  const DenoisedFrames frames(mission_, beams->sonar, noise);
+  result.bearing_deblur =
+      beams->sonar.horizontalBeamWidth() > 0.0
+          ? frames.bearingDeblur() + (beams->reason.empty() ? "" : "; " + beams->reason)
+          : "off: " + beams->reason;
   // The keep level bounds what frames carve: a run that only resolves a loaded map's surface
   // (startFrom without carving) reads no frame for it.
   if (carvesMainLobe(sonar_, stage.carve) && carve_frames_) {

@@ -8,12 +8,19 @@
 //    background's, the default) or coherent (the envelope of their phasors, the background's
 //    phase uniform: a Rician pixel, as a real receiver forms it; a return as strong as the
 //    background then raises the pixel's mean by a fraction of itself, not by all of it).
+// Beams wider than their spacing (a sonar declaring its horizontal beam width) form both from
+// the same scatterers: the background and the speckle are then correlated across bearing as
+// the beams' fields overlap. Each is drawn as white complex Gaussian fields filtered across
+// bearing by the beam's amplitude pattern (sinc), with the same distribution in each pixel as
+// above; the speckle's `looks` are then whole (a fraction is drawn white). Otherwise both are
+// white, one draw per pixel.
 // An empty-water frame is the background alone: the frames a noise model is learned from.
 #pragma once
 
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 #include "common/enum_names.h"
 #include "sonar/sonar_model.h"
@@ -66,8 +73,14 @@ class FrameNoise {
   void add(cv::Mat& image, std::uint64_t frame_index) const;
 
  private:
+  void addWhite(cv::Mat& image, std::uint64_t frame_index) const;
+  void addAcrossBeams(cv::Mat& image, std::uint64_t frame_index) const;
+
   NoiseSpec spec_;
   cv::Mat background_sigma_;  // CV_64F, per pixel: the Rayleigh scale of the background
+  // Beams wider than their spacing: the amplitude pattern's weights from beam -h to +h, their
+  // squares summing to 1; empty when the beams are not declared wider.
+  std::vector<float> field_taps_;
 };
 
 }  // namespace sonarcarve

@@ -124,7 +124,7 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
       mission_sonar, trajectory.mounting);
   SimulationResult result;
   {
-    const FrameNoise noise(request.noise, request.sonar);
+    const FrameNoise noise(request.noise, mission_sonar);
     // Each frame is noised, encoded and written while the next one renders; two wait at most.
     // (Declared after what its jobs use: on the way out it stops before they go.)
     SerialWorker frame_writer(2);

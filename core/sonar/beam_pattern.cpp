@@ -1,5 +1,6 @@
 #include "sonar/beam_pattern.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -68,8 +69,12 @@ SincSquaredBeam::SincSquaredBeam(double width_rad) : width_rad_(width_rad) {
 }
 
 double SincSquaredBeam::power(double angle_rad) const {
-  const double s = sinc(k_ * angle_rad);
+  const double s = amplitude(angle_rad);
   return s * s;
+}
+
+double SincSquaredBeam::amplitude(double angle_rad) const {
+  return sinc(k_ * angle_rad);
 }
 
 double SincSquaredBeam::null(int n) const {
@@ -93,6 +98,22 @@ double SincSquaredBeam::halfAngleAt(double level_db) const {
   const double x = crossing([](double v) { return sinc(v) * sinc(v); },
                             std::pow(10.0, level_db / 10.0), 1e-9, std::numbers::pi);
   return x / k_;
+}
+
+std::vector<double> meansOverBeams(const SincSquaredBeam& beam, double spacing_rad, int max_half,
+                                   bool amplitude) {
+  constexpr int kSamples = 16;  // across each beam's interval
+  const int half = std::min(static_cast<int>(beam.null(2) / spacing_rad), max_half);
+  std::vector<double> means;
+  for (int d = -half; d <= half; ++d) {
+    double sum = 0.0;
+    for (int s = 0; s < kSamples; ++s) {
+      const double angle = (d - 0.5 + (s + 0.5) / kSamples) * spacing_rad;
+      sum += amplitude ? beam.amplitude(angle) : beam.power(angle);
+    }
+    means.push_back(sum / kSamples);
+  }
+  return means;
 }
 
 }  // namespace sonarcarve

@@ -15,6 +15,8 @@
 // The simulator's realistic beam uses it in elevation and in bearing.
 #pragma once
 
+#include <vector>
+
 namespace sonarcarve {
 
 class BeamPattern {
@@ -41,6 +43,9 @@ class SincSquaredBeam {
   double width() const { return width_rad_; }
   /// Power in [0, 1] of a return at `angle_rad` off the axis, side lobes included.
   double power(double angle_rad) const;
+  /// The field's amplitude there, sinc(k angle): its square is power(); negative in odd side
+  /// lobes.
+  double amplitude(double angle_rad) const;
   /// Angle of the n-th null (n >= 1): n pi / k.
   double null(int n) const;
   /// Angle of the peak of the n-th side lobe (n >= 1), where tan(k theta) = k theta.
@@ -52,6 +57,13 @@ class SincSquaredBeam {
   double width_rad_;
   double k_;  // sinc argument per radian
 };
+
+/// A sinc^2 beam's pattern averaged over each beam's interval of bearing, for beams
+/// `spacing_rad` apart: the weights from beam -half to +half, out to the pattern's second null
+/// (as the simulator traces it) and at most `max_half`. `amplitude`: the field's pattern
+/// (sinc) rather than the power's (sinc^2).
+std::vector<double> meansOverBeams(const SincSquaredBeam& beam, double spacing_rad, int max_half,
+                                   bool amplitude);
 
 /// The x > 0 where sin(x) / x equals 10^(-3/10): the -3 dB point of the sinc main lobe.
 double sincMinus3dBArgument();

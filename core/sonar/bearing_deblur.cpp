@@ -18,8 +18,6 @@ namespace {
 // sub-rays sample it), a beam half as wide as its spacing keeps 94 %, one as wide 79 % (9 % in
 // each neighbour) and one five times as wide 19 %.
 constexpr double kSharpShare = 0.9;
-// Sub-samples of the pattern across one beam's interval.
-constexpr int kTapSamples = 16;
 // Exact frames: the sonar's whole counts read 0 under half a count (carve/carve_params.h,
 // kDarkPixelCounts), so the deconvolution's residue there is dark. Left lit, it let every
 // frame carve to the main lobe's edge (docs/benchmarks.md).
@@ -27,19 +25,6 @@ constexpr float kHalfCount = 0.5f;
 // Estimates that fall this far under their row's brightest are dark: repeated products
 // would otherwise reach denormal floats, slow to compute with.
 constexpr float kNegligible = 1e-7f;
-
-double medianSpacing(const BearingTable& table) {
-  std::vector<double> gaps;
-  for (int b = 1; b < table.count(); ++b) {
-    gaps.push_back(table.centre(b) - table.centre(b - 1));
-  }
-  if (gaps.empty()) {
-    return 0.0;
-  }
-  const auto middle = gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2);
-  std::nth_element(gaps.begin(), middle, gaps.end());
-  return *middle;
-}
 
 // One row's Richardson-Lucy deconvolution over the columns [lo, hi] of `row` (the rest of
 // the row is dark). `exact`: every column of the image is data; otherwise lit ones only.
@@ -122,32 +107,41 @@ class RowDeconvolution {
 
 }  // namespace
 
-BearingDeblur::BearingDeblur(const SonarModel& sonar)
-    : width_rad_(sonar.horizontalBeamWidth()), spacing_rad_(medianSpacing(sonar.bearings())) {
-  const double width = width_rad_;
-  const double spacing = spacing_rad_;
-  if (!(width > 0.0) || !(spacing > 0.0)) {
-    return;
+double medianBeamSpacing(const BearingTable& table) {
+  std::vector<double> gaps;
+  for (int b = 1; b < table.count(); ++b) {
+    gaps.push_back(table.centre(b) - table.centre(b - 1));
   }
-  // The pattern to its second null, as far as the simulator traces it (sim/sonar_simulator.h).
-  const SincSquaredBeam beam(width);
-  const int half = std::min(static_cast<int>(beam.null(2) / spacing), sonar.cols() - 1);
-  // Each tap: the pattern's mean over that beam's interval of bearing.
-  std::vector<double> weights;
+  if (gaps.empty()) {
+    return 0.0;
+  }
+  const auto middle = gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2);
+  std::nth_element(gaps.begin(), middle, gaps.end());
+  return *middle;
+}
+
+std::vector<float> bearingBlurKernel(double width_rad, double spacing_rad, int max_half) {
+  const std::vector<double> weights =
+      meansOverBeams(SincSquaredBeam(width_rad), spacing_rad, max_half, false);
   double total = 0.0;
-  for (int d = -half; d <= half; ++d) {
-    double sum = 0.0;
-    for (int s = 0; s < kTapSamples; ++s) {
-      sum += beam.power((d - 0.5 + (s + 0.5) / kTapSamples) * spacing);
-    }
-    weights.push_back(sum / kTapSamples);
-    total += weights.back();
+  for (const double w : weights) {
+    total += w;
   }
-  if (weights[static_cast<std::size_t>(half)] / total > kSharpShare) {
+  std::vector<float> kernel;
+  for (const double w : weights) {
+    kernel.push_back(static_cast<float>(w / total));
+  }
+  return kernel;
+}
+
+BearingDeblur::BearingDeblur(const SonarModel& sonar)
+    : width_rad_(sonar.horizontalBeamWidth()), spacing_rad_(medianBeamSpacing(sonar.bearings())) {
+  if (!(width_rad_ > 0.0) || !(spacing_rad_ > 0.0)) {
     return;
   }
-  for (const double w : weights) {
-    kernel_.push_back(static_cast<float>(w / total));
+  std::vector<float> kernel = bearingBlurKernel(width_rad_, spacing_rad_, sonar.cols() - 1);
+  if (kernel[kernel.size() / 2] <= kSharpShare) {
+    kernel_ = std::move(kernel);
   }
 }
 

@@ -27,6 +27,14 @@
 
 namespace sonarcarve {
 
+/// The median gap between neighbouring beams' centres, radians (0 for a single beam).
+double medianBeamSpacing(const BearingTable& table);
+
+/// The blur across bearing of beams `width_rad` wide (-3 dB, sinc^2) and `spacing_rad` apart:
+/// weights from beam -half to +half (half at most `max_half`), each the pattern's mean over
+/// that beam's interval, summing to 1.
+std::vector<float> bearingBlurKernel(double width_rad, double spacing_rad, int max_half);
+
 class BearingDeblur {
  public:
   /// Richardson-Lucy iterations for frames with exact dark pixels and behind a detector.

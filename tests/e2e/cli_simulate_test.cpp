@@ -138,7 +138,7 @@ TEST(CliSimulate, WideBeamsAreDeclaredAndTheirBlurTakenOut) {
   test::ScratchDir dir;
   for (const std::string width : {"0", "1"}) {
     const auto r = runCli(
-        "simulate --scene riser --max-frames 2 --noise none --seed 4 "
+        "simulate --scene riser --max-frames 6 --noise none --seed 4 "
         "--horizontal-beam-width " +
         width + " --out " + quoted(dir.path() / width));
     ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -165,6 +165,39 @@ TEST(CliSimulate, WideBeamsAreDeclaredAndTheirBlurTakenOut) {
   const double after = haloShare(sharp);
   EXPECT_GT(before, 0.01);
   EXPECT_LT(after, 0.25 * before) << before;
+  // A log that does not say how wide its beams are: the width is read from its frames, to
+  // the cutoff's bin and the 1 % search (unit/beam_width_estimate_test.cpp), and none is read
+  // from the narrow twin's.
+  SilentProgress progress;
+  const std::vector<std::size_t> all{0, 1, 2, 3, 4, 5};
+  const SonarModel unsaid = wide.sonar.withHorizontalBeamWidth(0.0);
+  const BeamWidthChoice read = chooseBeamWidth(wide, unsaid, all, progress);
+  EXPECT_NEAR(radToDeg(read.sonar.horizontalBeamWidth()), 1.0, 0.05) << read.reason;
+  EXPECT_NE(read.reason.find("width read from 6 frames"), std::string::npos) << read.reason;
+  const BeamWidthChoice none = chooseBeamWidth(narrow, narrow.sonar, all, progress);
+  EXPECT_EQ(none.sonar.horizontalBeamWidth(), 0.0);
+  EXPECT_NE(none.reason.find("none was read from 6 frames"), std::string::npos) << none.reason;
+  // A declared width is used as it is.
+  EXPECT_EQ(chooseBeamWidth(wide, wide.sonar, all, progress).reason, "");
+}
+
+TEST(CliSimulate, WideBeamsNoiseIsFormedByTheBeamsAndTheirWidthReadThroughIt) {
+  // Speckle and background correlated across bearing as the beams overlap
+  // (unit/sim_noise_test.cpp) keep the rows' cutoff: the width is read through the noise. The
+  // envelope's detection spreads a little power past the cutoff and moves its steepest fall
+  // down by up to a smoothing window (11 of 650 bins, 10 % of a 1 degree beam's cutoff), so
+  // the width is read up to 20 % wide.
+  test::ScratchDir dir;
+  const auto r =
+      runCli("simulate --scene riser --max-frames 3 --seed 4 --horizontal-beam-width 1 --out " +
+             quoted(dir.path()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Mission noisy = readMission(dir.path());
+  SilentProgress progress;
+  const BeamWidthChoice read =
+      chooseBeamWidth(noisy, noisy.sonar.withHorizontalBeamWidth(0.0), {0, 1, 2}, progress);
+  EXPECT_GE(radToDeg(read.sonar.horizontalBeamWidth()), 0.95) << read.reason;
+  EXPECT_LE(radToDeg(read.sonar.horizontalBeamWidth()), 1.2) << read.reason;
 }
 
 TEST(CliNavError, WritesTheMissionsNavigationWithSeededErrors) {

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/angles.h"
 #include "common/error.h"
 #include "sim/noise.h"
+#include "sonar/beam_pattern.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {
@@ -50,17 +52,81 @@ TEST(SimNoise, BackgroundIsStrongerNearTheSonarAndAtTheFanEdges) {
               1e-3 * spec.background_mean);
 }
 
-TEST(SimNoise, SpeckleOnReturnsHasUnitMeanAndGammaSpread) {
-  const SonarModel sonar = test::paperSonar();
+// A frame of returns of 1000 counts everywhere under 4-look speckle, without background.
+cv::Mat speckledReturns(const SonarModel& sonar) {
   NoiseSpec spec;
-  spec.background_mean = 1e-9;  // returns only
+  spec.background_mean = 1e-9;
   spec.speckle_looks = 4.0;
   cv::Mat image(sonar.rows(), sonar.cols(), CV_32F, cv::Scalar(1000.0f));
   addNoise(image, spec, sonar, 3);
+  return image;
+}
+
+TEST(SimNoise, SpeckleOnReturnsHasUnitMeanAndGammaSpread) {
+  const cv::Mat image = speckledReturns(test::paperSonar());
   cv::Scalar mean, stddev;
   cv::meanStdDev(image, mean, stddev);
   EXPECT_NEAR(mean[0], 1000.0, 3.0);
-  EXPECT_NEAR(stddev[0], 1000.0 / std::sqrt(spec.speckle_looks), 5.0);  // Gamma(L, 1/L)
+  EXPECT_NEAR(stddev[0], 1000.0 / 2.0, 5.0);  // Gamma(L, 1/L): 1 / sqrt(L)
+}
+
+// The correlation coefficient of v^2 between pixels `dr` rows and `dc` beams apart, v the
+// pixel over its expected background mean.
+double powerCorrelation(const cv::Mat& image, const NoiseSpec& spec, const SonarModel& sonar,
+                        int dr, int dc) {
+  double sa = 0.0, sb = 0.0, saa = 0.0, sbb = 0.0, sab = 0.0, n = 0.0;
+  for (int r = 0; r + dr < image.rows; ++r) {
+    for (int c = 0; c + dc < image.cols; ++c) {
+      const double a = std::pow(image.at<float>(r, c) / backgroundMean(spec, sonar, r, c), 2);
+      const double b = std::pow(
+          image.at<float>(r + dr, c + dc) / backgroundMean(spec, sonar, r + dr, c + dc), 2);
+      sa += a, sb += b, saa += a * a, sbb += b * b, sab += a * b, n += 1.0;
+    }
+  }
+  const double cov = sab / n - (sa / n) * (sb / n);
+  return cov / std::sqrt((saa / n - sa * sa / n / n) * (sbb / n - sb * sb / n / n));
+}
+
+TEST(SimNoise, BeamsWiderThanTheirSpacingCorrelateTheBackgroundAcrossBearing) {
+  // The background is the beams' field: two beams' powers correlate as the square of their
+  // amplitude patterns' overlap. For a sinc amplitude pattern that overlap at an offset D is
+  // sinc(k D) itself (k: the -3 dB point of sinc^2 at half the width), so 1 degree beams
+  // correlate 0.90 at 0.2 degree and 0.016 at 1 degree. Each pixel stays Rayleigh, and range
+  // bins stay independent.
+  const SonarModel sonar = test::paperSonar().withHorizontalBeamWidth(degToRad(1.0));
+  NoiseSpec spec;
+  spec.background_mean = 200.0;
+  cv::Mat image(sonar.rows(), sonar.cols(), CV_32F, cv::Scalar(0.0f));
+  addNoise(image, spec, sonar, 0);
+  const auto [mean, stddev] = normalisedMeanAndStd(image, spec, sonar);
+  // About 5 beams share each independent sample: the +-0.1 % of white noise becomes +-0.25 %.
+  EXPECT_NEAR(mean, 1.0, 0.01);
+  EXPECT_NEAR(stddev, std::sqrt(4.0 / std::numbers::pi - 1.0), 0.01);
+  const double k = sincSquaredMinus3dBArgument() / degToRad(0.5);
+  const auto sinc = [](double x) { return std::sin(x) / x; };
+  // Sampled over each beam's interval, the pattern overlaps a little less than continuous.
+  EXPECT_NEAR(powerCorrelation(image, spec, sonar, 0, 1), std::pow(sinc(k * degToRad(0.2)), 2),
+              0.05);
+  EXPECT_NEAR(powerCorrelation(image, spec, sonar, 0, 5), std::pow(sinc(k * degToRad(1.0)), 2),
+              0.03);
+  EXPECT_NEAR(powerCorrelation(image, spec, sonar, 1, 0), 0.0, 0.02);
+  // Beams that do not declare a width: white.
+  cv::Mat white(sonar.rows(), sonar.cols(), CV_32F, cv::Scalar(0.0f));
+  addNoise(white, spec, test::paperSonar(), 0);
+  EXPECT_NEAR(powerCorrelation(white, spec, sonar, 0, 1), 0.0, 0.02);
+}
+
+TEST(SimNoise, BeamsWiderThanTheirSpacingCorrelateTheSpeckleAcrossBearing) {
+  const cv::Mat image = speckledReturns(test::paperSonar().withHorizontalBeamWidth(degToRad(1.0)));
+  cv::Scalar mean, stddev;
+  cv::meanStdDev(image, mean, stddev);
+  // Gamma(L, 1/L) in each pixel, from about a fifth as many independent samples as pixels.
+  EXPECT_NEAR(mean[0], 1000.0, 6.0);
+  EXPECT_NEAR(stddev[0], 1000.0 / 2.0, 10.0);
+  // Each look's power correlates as the background's (0.90 at 0.2 degree); their mean too.
+  cv::Mat a = image.colRange(0, image.cols - 1), b = image.colRange(1, image.cols);
+  cv::Mat da = a - mean[0], db = b - mean[0];
+  EXPECT_GT(cv::sum(da.mul(db))[0] / (stddev[0] * stddev[0] * static_cast<double>(a.total())), 0.8);
 }
 
 TEST(SimNoise, SameSeedAndFrameGiveTheSameNoise) {
