@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <numeric>
 
 #include "cli/commands.h"
 #include "cli/source_flags.h"
@@ -18,6 +19,7 @@
 #include "io/mission_summary.h"
 #include "io/oculus_log.h"
 #include "io/ros_bag.h"
+#include "pipeline/frame_stage.h"
 #include "sonar/bearing_deblur.h"
 
 namespace sonarcarve::cli {
@@ -229,8 +231,18 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
     }
     const Mission& mission = *opened;
     const MissionSummary summary = summarize(mission, true);
+    // A mission that does not say how wide its beams are: what a run reads from its frames.
+    std::vector<std::size_t> all(mission.frames.size());
+    std::iota(all.begin(), all.end(), std::size_t{0});
+    SilentProgress silent;
+    const BeamWidthChoice beams = chooseBeamWidth(mission, mission.sonar, all, silent);
     if (*json) {
       nlohmann::json j = summaryJson(mission.sonar, summary);
+      j["sonar"]["horizontal_beam_width_read_deg"] =  // null: given, or none read
+          beams.reason.empty() || !(beams.sonar.horizontalBeamWidth() > 0.0)
+              ? nlohmann::json(nullptr)
+              : nlohmann::json(radToDeg(beams.sonar.horizontalBeamWidth()));
+      j["sonar"]["horizontal_beam_width_reading"] = beams.reason;
       j["folder"] = mission.folder.string();
       j["source"] = mission.source->kind();
       j["warnings"] = mission.warnings;
@@ -240,6 +252,12 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
       std::printf("Mission      %s (%s, %s)\n", summary.name.c_str(),
                   mission.folder.string().c_str(), mission.source->kind().c_str());
       printText(mission.sonar, summary);
+      if (!beams.reason.empty()) {
+        std::printf("  beams      %s%s\n", beams.reason.c_str(),
+                    BearingDeblur(beams.sonar).active()
+                        ? "; a run takes their blur across bearing out"
+                        : "");
+      }
       printFrameTimes(mission);
       for (const std::string& line : mission.contents) {
         std::printf("Recording    %s\n", line.c_str());

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <cmath>
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "common/angles.h"
@@ -179,6 +180,20 @@ TEST(CliSimulate, WideBeamsAreDeclaredAndTheirBlurTakenOut) {
   EXPECT_NE(none.reason.find("none was read from 6 frames"), std::string::npos) << none.reason;
   // A declared width is used as it is.
   EXPECT_EQ(chooseBeamWidth(wide, wide.sonar, all, progress).reason, "");
+  // `info` on the wide mission with its width taken out says what a run reads.
+  const auto yaml = dir.path() / "1" / "mission.yaml";
+  std::string text = test::readText(yaml);
+  const auto key = text.find("  horizontal_beam_width_deg");
+  ASSERT_NE(key, std::string::npos);
+  text.erase(key, text.find('\n', key) + 1 - key);
+  test::writeText(yaml, text);
+  const auto info = runCli("info --json " + quoted(dir.path() / "1"));
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  const nlohmann::json sonar = nlohmann::json::parse(info.output)["sonar"];
+  EXPECT_TRUE(sonar["horizontal_beam_width_deg"].is_null());
+  EXPECT_NEAR(sonar["horizontal_beam_width_read_deg"].get<double>(), 1.0, 0.05);
+  EXPECT_NE(sonar["horizontal_beam_width_reading"].get<std::string>().find("width read from 6"),
+            std::string::npos);
 }
 
 TEST(CliSimulate, WideBeamsNoiseIsFormedByTheBeamsAndTheirWidthReadThroughIt) {
