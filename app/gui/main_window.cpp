@@ -554,6 +554,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   runner_->cancel();
   const bool another = mission_ && mission_->folder != mission->folder;
   mission_ = mission;
+  read_beam_width_rad_ = 0.0;  // read again for this mission (readBeamWidth)
   view_settled_ = false;
   last_pick_.reset();
   map_view_->clearPicks();
@@ -623,6 +624,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
 void MainWindow::readBeamWidth() {
   read_beam_width_rad_ = 0.0;
   beam_width_job_.discard();
+  // Every frame is a candidate (a run takes those it places in the navigation).
   if (mission_->sonar.horizontalBeamWidth() > 0.0) {
     return;
   }

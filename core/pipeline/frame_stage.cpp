@@ -109,6 +109,11 @@ BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
     }
     progress.report("beam width", k + 1, count);
   }
+  if (read == 0) {
+    return {sonar,
+            "the mission gives no horizontal beam width, and no frame could be read for "
+            "one"};
+  }
   const BeamWidthEstimate estimate = estimateBeamWidth(spectrum, sonar.bearings());
   const std::string frames = " from " + std::to_string(read) + " frames: ";
   if (!(estimate.width_rad > 0.0)) {

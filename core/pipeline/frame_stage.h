@@ -57,11 +57,13 @@ struct BeamWidthChoice {
   std::string reason;  ///< empty when the sonar declares its width (or an analyst gave one)
 };
 
+/// Frames read for the beams' width.
+inline constexpr std::size_t kBeamWidthFrames = 24;
+
 /// `sonar` as it is when it declares its beams' width; otherwise with the width read from up
 /// to kBeamWidthFrames of the frames `indices`, evenly spread (sonar/beam_width_estimate.h),
 /// when one can be read. Frames that cannot be read are passed over (the carving stage reports
 /// them). Throws Cancelled.
-inline constexpr std::size_t kBeamWidthFrames = 24;
 BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
                                 const std::vector<std::size_t>& indices, Progress& progress);
 

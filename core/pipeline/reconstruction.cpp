@@ -123,9 +123,11 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   result.denoising = noise.reason;
   // Beams wider than their spacing blur each row across bearing: taken out of the frames,
   // with the width the sonar declares or, failing that, one read from the frames.
+  // A run that reads no frame (startFrom without carving) reads none for it either.
   std::optional<BeamWidthChoice> beams;
   try {
-    beams = chooseBeamWidth(mission_, sonar_, indicesOf(posed), progress);
+    beams = carve_frames_ ? chooseBeamWidth(mission_, sonar_, indicesOf(posed), progress)
+                          : BeamWidthChoice{sonar_, ""};
   } catch (const Cancelled&) {
     result.cancelled = true;
     return result;

@@ -164,9 +164,9 @@ FrameNoise::FrameNoise(const NoiseSpec& spec, const SonarModel& sonar) : spec_(s
       row[c] = backgroundMean(spec_, sonar, r, c) * to_sigma;
     }
   }
-  if (sonar.horizontalBeamWidth() > 0.0) {
-    field_taps_ = amplitudeTaps(sonar.horizontalBeamWidth(), medianBeamSpacing(sonar.bearings()),
-                                sonar.cols() - 1);
+  const double spacing = medianBeamSpacing(sonar.bearings());
+  if (sonar.horizontalBeamWidth() > 0.0 && spacing > 0.0) {  // a single beam has no neighbours
+    field_taps_ = amplitudeTaps(sonar.horizontalBeamWidth(), spacing, sonar.cols() - 1);
   }
 }
 
@@ -217,7 +217,9 @@ void FrameNoise::addAcrossBeams(cv::Mat& image, std::uint64_t frame_index) const
   const int looks = correlated_speckle ? static_cast<int>(whole) : 0;
   const double fraction = spec_.speckle_looks - looks;
   // The fraction of a look left, drawn white (the whole speckle where it is not correlated).
-  std::gamma_distribution<float> rest(static_cast<float>(std::max(fraction, 1e-6)), 1.0f);
+  const bool white_rest = fraction > 1e-9;
+  std::gamma_distribution<float> rest(static_cast<float>(white_rest ? fraction : 1.0), 1.0f);
+  const float to_mean = 1.0f / static_cast<float>(spec_.speckle_looks);
   const bool coherent = spec_.combination == NoiseCombination::Coherent;
   FieldRow field(field_taps_, image.cols);
   std::vector<float> bg_re, bg_im, sp_re, sp_im;
@@ -237,13 +239,12 @@ void FrameNoise::addAcrossBeams(cv::Mat& image, std::uint64_t frame_index) const
           speckle[i] += 0.5f * (sp_re[i] * sp_re[i] + sp_im[i] * sp_im[i]);
         }
       }
-      if (fraction > 1e-9) {
+      if (white_rest) {
         for (float& s : speckle) {
           s += rest(rng);
         }
       }
     }
-    const float to_mean = 1.0f / static_cast<float>(spec_.speckle_looks);
     for (int c = 0; c < image.cols; ++c) {
       const auto i = static_cast<std::size_t>(c);
       // The background's field: a Rayleigh amplitude of scale sigma, its phase uniform.

@@ -103,7 +103,10 @@ double SincSquaredBeam::halfAngleAt(double level_db) const {
 std::vector<double> meansOverBeams(const SincSquaredBeam& beam, double spacing_rad, int max_half,
                                    bool amplitude) {
   constexpr int kSamples = 16;  // across each beam's interval
-  const int half = std::min(static_cast<int>(beam.null(2) / spacing_rad), max_half);
+  if (!(spacing_rad > 0.0) || max_half < 0) {
+    throw Error("beam pattern", "beam spacing", "expected beams a positive angle apart");
+  }
+  const int half = static_cast<int>(std::min(beam.null(2) / spacing_rad, double(max_half)));
   std::vector<double> means;
   for (int d = -half; d <= half; ++d) {
     double sum = 0.0;

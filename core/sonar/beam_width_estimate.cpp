@@ -17,15 +17,15 @@ namespace {
 constexpr double kLowBand = 0.05;
 // ... and half an octave under the Nyquist frequency at most, so that its fall can be
 // measured over the octave about it.
-constexpr double kOctave = 1.41421356;  // half an octave
+constexpr double kHalfOctave = 1.41421356;
 // Band-limited rows: their spectrum falls this much more over the octave about its cutoff
-// than over the octave under that. A scene's own spectrum bends little: 3 to 4 dB in our
-// scenes with beams as wide as their spacing. A cutoff bends it 13 dB (with noise formed by
-// the beams) to 40 dB (without).
+// than over the octave under that. A scene's own spectrum bends little: 1 to 4 dB in our
+// scenes with beams as wide as their spacing. A cutoff bends it 14 dB (with noise formed by
+// the beams) to 23 to 37 dB (without).
 constexpr double kMinKneeDb = 10.0;
-// Within an octave of Nyquist, beams too narrow to cut off under it still bend the spectrum
-// there (their triangle's slope): 0.3 degree beams 0.2 degree apart bend it 8 dB. There a
-// cutoff must bend it this much.
+// Within an octave of Nyquist (above 0.25 cycles per beam), beams too narrow to cut off
+// under Nyquist still bend the spectrum by their triangle's slope: 0.3 degree beams 0.2
+// degree apart bend it 8 dB there. A margin: a cutoff there must bend it this much.
 constexpr double kMinKneeNearNyquistDb = 20.0;
 // Widths are searched up to this many beam spacings: a wider beam's cutoff lies within the
 // low band, under kLowBand cycles per beam (0.8845 / 20 = 0.044).
@@ -69,7 +69,9 @@ int steepestFall(const std::vector<double>& power, int from, int to, int m) {
   return steepest;
 }
 
-// The blur kernel's power spectrum at the bins of an n-beam row.
+// The blur kernel's power spectrum at the bins of an n-beam row, as a Hann-windowed row shows
+// a broadband scene through it: spread over the window's power response (1/4 in the bin,
+// 1/16 in each neighbour).
 std::vector<double> kernelPower(double width_rad, double spacing_rad, int n) {
   const std::vector<float> k = bearingBlurKernel(width_rad, spacing_rad, n - 1);
   const int half = static_cast<int>(k.size() / 2);
@@ -82,7 +84,13 @@ std::vector<double> kernelPower(double width_rad, double spacing_rad, int n) {
     }
     power[bin] = h * h;
   }
-  return power;
+  std::vector<double> seen(power.size());
+  for (std::size_t bin = 0; bin < power.size(); ++bin) {
+    const double below = power[bin > 0 ? bin - 1 : 1];  // the spectrum is even about 0
+    const double above = bin + 1 < power.size() ? power[bin + 1] : power[bin - 1];
+    seen[bin] = 0.25 * power[bin] + 0.0625 * (below + above);
+  }
+  return seen;
 }
 
 }  // namespace
@@ -121,7 +129,7 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
   const int m = std::max(1, n / 128);
   const int from = std::max(m + 1, static_cast<int>(kLowBand * n));
   const int top = n / 2 - 1 - m;  // the highest bin whose smoothing stays under Nyquist
-  const int to = static_cast<int>(top / kOctave);
+  const int to = static_cast<int>(top / kHalfOctave);
   if (to <= from + m) {
     estimate.reason = "too few beams for a spectrum across bearing";
     return estimate;
@@ -145,8 +153,9 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
     return estimate;
   }
   const auto level = [&](double k) { return smoothedDb(s, static_cast<int>(std::lround(k)), m); };
-  estimate.drop_db = level(cut / kOctave) - level(cut * kOctave);
-  estimate.knee_db = estimate.drop_db - (level(cut / (2.0 * kOctave)) - level(cut / kOctave));
+  estimate.drop_db = level(cut / kHalfOctave) - level(cut * kHalfOctave);
+  estimate.knee_db =
+      estimate.drop_db - (level(cut / (2.0 * kHalfOctave)) - level(cut / kHalfOctave));
   const bool near_nyquist = cut > n / 4;
   const double min_knee = near_nyquist ? kMinKneeNearNyquistDb : kMinKneeDb;
   if (estimate.knee_db < min_knee) {
@@ -156,6 +165,7 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
                   "bends it %.0f dB or more)",
                   estimate.cutoff, estimate.knee_db, min_knee);
     estimate.reason = text;
+    estimate.cutoff = 0.0;
     return estimate;
   }
   // The width whose kernel's spectrum falls most steeply there (lower as the width grows):
@@ -169,7 +179,9 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
   const double floor = median(std::vector<double>(s.begin() + top - top / 8, s.begin() + top + 1));
   const int under = std::max(1, cut / 2);
   const double rows_under = std::pow(10.0, smoothedDb(s, under, m) / 10.0);
-  for (double width = 2.0 * spacing; width <= widest; width *= 1.01) {
+  // Widths that tie (their kernels fall most steeply in the same bin): the geometric middle.
+  double tied_first = 0.0, tied_last = 0.0;
+  for (double width = 2.0 * spacing; width < widest; width *= 1.01) {
     std::vector<double> model = kernelPower(width, spacing, n);
     const double scale = rows_under / std::pow(10.0, smoothedDb(model, under, m) / 10.0);
     for (double& p : model) {
@@ -178,11 +190,14 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
     const int gap = std::abs(steepestFall(model, from, top - m, m) - cut);
     if (gap < best_gap) {
       best_gap = gap;
-      estimate.width_rad = width;
+      tied_first = width;
+    }
+    if (gap == best_gap) {
+      tied_last = width;
     }
   }
   if (best_gap > m) {
-    estimate.width_rad = 0.0;
+    estimate.cutoff = 0.0;
     std::snprintf(text, sizeof text,
                   "the rows' spectrum falls most steeply at %.3f cycles per beam, "
                   "where no beam from twice the spacing to %.0f times it cuts off",
@@ -190,6 +205,7 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
     estimate.reason = text;
     return estimate;
   }
+  estimate.width_rad = std::sqrt(tied_first * tied_last);
   std::snprintf(text, sizeof text,
                 "%.2f degree beams: the rows cut off across bearing at %.3f cycles per beam "
                 "(falling %.0f dB over an octave, %.0f dB more than under it)",

@@ -5,9 +5,9 @@
 // above 0.8845 / w cycles per radian: its spectrum is a triangle, the aperture's
 // autocorrelation. Beams wider than their spacing put that cutoff under the Nyquist frequency
 // of the beam spacing (0.5 cycles per beam) once they are about 1.8 spacings wide, and the
-// rows' summed power spectrum then bends down at the cutoff, whatever the scene: it falls 13 dB
-// an octave more there than under it with noise formed by the beams, over 30 dB without,
-// where a scene's own spectrum (an edge's falls 6 dB an octave) bends 3 to 4 dB. The
+// rows' summed power spectrum then bends down at the cutoff, whatever the scene: it falls 14 dB
+// an octave more there than under it with noise formed by the beams, 23 to 37 dB without,
+// where a scene's own spectrum (an edge's falls 6 dB an octave) bends 1 to 4 dB. The
 // width is the one whose blur kernel's spectrum (sonar/bearing_deblur.h) falls most steeply
 // at the same frequency.
 //

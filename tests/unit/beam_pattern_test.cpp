@@ -97,5 +97,19 @@ TEST(SincSquaredBeam, NullsAndSideLobesOfAUniformAperture) {
   EXPECT_THROW(b.halfAngleAt(0.0), Error);
 }
 
+TEST(SincSquaredBeam, MeansOverBeamsFollowThePatternAndNeedASpacing) {
+  // Beams as wide as their spacing: the centre beam's mean over its interval, [-w/2, w/2], is
+  // under 1 and over the -3 dB at its edges; the amplitude's mean squared is near the power's.
+  const SincSquaredBeam beam(degToRad(1.0));
+  const std::vector<double> power = meansOverBeams(beam, degToRad(1.0), 10, false);
+  const std::vector<double> field = meansOverBeams(beam, degToRad(1.0), 10, true);
+  ASSERT_EQ(power.size(), 5u);  // to the second null, 2.26 widths: 2 beams each side
+  EXPECT_LT(power[2], 1.0);
+  EXPECT_GT(power[2], std::pow(10.0, -0.3));
+  EXPECT_NEAR(field[2] * field[2], power[2], 0.05);
+  EXPECT_EQ(meansOverBeams(beam, degToRad(0.2), 3, false).size(), 7u);  // at most max_half
+  EXPECT_THROW(meansOverBeams(beam, 0.0, 10, false), Error);
+}
+
 }  // namespace
 }  // namespace sonarcarve

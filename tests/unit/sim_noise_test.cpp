@@ -129,6 +129,15 @@ TEST(SimNoise, BeamsWiderThanTheirSpacingCorrelateTheSpeckleAcrossBearing) {
   EXPECT_GT(cv::sum(da.mul(db))[0] / (stddev[0] * stddev[0] * static_cast<double>(a.total())), 0.8);
 }
 
+TEST(SimNoise, ASingleBeamGivenAWidthHasNoNeighboursToShareItsNoise) {
+  const SonarModel one = SonarModel("s", RangeBins{1.0, 0.02, 50},
+                                    BearingTable::uniform(degToRad(10.0), 1), degToRad(20.0))
+                             .withHorizontalBeamWidth(degToRad(1.0));
+  cv::Mat image(one.rows(), one.cols(), CV_32F, cv::Scalar(0.0f));
+  addNoise(image, NoiseSpec{}, one, 0);
+  EXPECT_GT(cv::countNonZero(image), 40);  // Rayleigh background, white
+}
+
 TEST(SimNoise, SameSeedAndFrameGiveTheSameNoise) {
   const SonarModel sonar = test::paperSonar();
   NoiseSpec spec;
