@@ -108,16 +108,40 @@ void BearingSpectrum::add(const cv::Mat& image) {
     throw Error("beam width", "frame",
                 "expected a float image " + std::to_string(beams_) + " beams wide");
   }
-  cv::Mat means;
-  cv::reduce(image, means, 1, cv::REDUCE_AVG);
-  cv::Mat centred = image - cv::repeat(means, 1, beams_);
-  centred = centred.mul(cv::repeat(window_, image.rows, 1));
+  // The rows that hold anything, their means out and windowed (a dark row adds nothing).
+  cv::Mat rows(image.rows, beams_, CV_32F);
+  int count = 0;
+  const float* window = window_.ptr<float>(0);
+  for (int r = 0; r < image.rows; ++r) {
+    const float* in = image.ptr<float>(r);
+    const double mean = cv::mean(image.row(r))[0];
+    if (!std::any_of(in, in + beams_, [&](float v) { return v != in[0]; })) {
+      continue;
+    }
+    float* out = rows.ptr<float>(count++);
+    for (int c = 0; c < beams_; ++c) {
+      out[c] = (in[c] - static_cast<float>(mean)) * window[c];
+    }
+  }
+  if (count == 0) {
+    return;
+  }
+  // Real transforms, packed (CCS): Re 0, then Re k, Im k for k = 1 ..., then Re n/2 if n
+  // is even.
   cv::Mat spectrum;
-  cv::dft(centred, spectrum, cv::DFT_ROWS | cv::DFT_COMPLEX_OUTPUT);
-  for (int r = 0; r < spectrum.rows; ++r) {
-    const auto* z = spectrum.ptr<cv::Vec2f>(r);
-    for (std::size_t k = 0; k < power_.size(); ++k) {
-      power_[k] += static_cast<double>(z[k][0]) * z[k][0] + static_cast<double>(z[k][1]) * z[k][1];
+  cv::dft(rows.rowRange(0, count), spectrum, cv::DFT_ROWS);
+  const int last = static_cast<int>(power_.size()) - 1;
+  for (int r = 0; r < count; ++r) {
+    const float* z = spectrum.ptr<float>(r);
+    power_[0] += static_cast<double>(z[0]) * z[0];
+    for (int k = 1; k <= last; ++k) {
+      const int re = 2 * k - 1;
+      if (re + 1 < beams_) {
+        power_[static_cast<std::size_t>(k)] +=
+            static_cast<double>(z[re]) * z[re] + static_cast<double>(z[re + 1]) * z[re + 1];
+      } else {  // the Nyquist bin of an even row: real
+        power_[static_cast<std::size_t>(k)] += static_cast<double>(z[re]) * z[re];
+      }
     }
   }
 }
