@@ -238,11 +238,12 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
     const BeamWidthChoice beams = chooseBeamWidth(mission, mission.sonar, all, silent);
     if (*json) {
       nlohmann::json j = summaryJson(mission.sonar, summary);
-      j["sonar"]["horizontal_beam_width_read_deg"] =  // null: given, or none read
-          beams.reason.empty() || !(beams.sonar.horizontalBeamWidth() > 0.0)
-              ? nlohmann::json(nullptr)
-              : nlohmann::json(radToDeg(beams.sonar.horizontalBeamWidth()));
-      j["sonar"]["horizontal_beam_width_reading"] = beams.reason;
+      // Beside the sonar's own fields, which a log's summary shares (before import).
+      j["beam_width"] = {{"read_deg",  // null: given, or none read
+                          beams.reason.empty() || !(beams.sonar.horizontalBeamWidth() > 0.0)
+                              ? nlohmann::json(nullptr)
+                              : nlohmann::json(radToDeg(beams.sonar.horizontalBeamWidth()))},
+                         {"reading", beams.reason}};
       j["folder"] = mission.folder.string();
       j["source"] = mission.source->kind();
       j["warnings"] = mission.warnings;

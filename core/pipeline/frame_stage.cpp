@@ -115,7 +115,8 @@ BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
             "one"};
   }
   const BeamWidthEstimate estimate = estimateBeamWidth(spectrum, sonar.bearings());
-  const std::string frames = " from " + std::to_string(read) + " frames: ";
+  const std::string frames =
+      " from " + std::to_string(read) + (read == 1 ? " frame: " : " frames: ");
   if (!(estimate.width_rad > 0.0)) {
     return {sonar, "the mission gives no horizontal beam width, and none was read" + frames +
                        estimate.reason};

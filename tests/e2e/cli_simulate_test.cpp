@@ -189,10 +189,10 @@ TEST(CliSimulate, WideBeamsAreDeclaredAndTheirBlurTakenOut) {
   test::writeText(yaml, text);
   const auto info = runCli("info --json " + quoted(dir.path() / "1"));
   ASSERT_EQ(info.exit_code, 0) << info.output;
-  const nlohmann::json sonar = nlohmann::json::parse(info.output)["sonar"];
-  EXPECT_TRUE(sonar["horizontal_beam_width_deg"].is_null());
-  EXPECT_NEAR(sonar["horizontal_beam_width_read_deg"].get<double>(), 1.0, 0.05);
-  EXPECT_NE(sonar["horizontal_beam_width_reading"].get<std::string>().find("width read from 6"),
+  const nlohmann::json j = nlohmann::json::parse(info.output);
+  EXPECT_TRUE(j["sonar"]["horizontal_beam_width_deg"].is_null());
+  EXPECT_NEAR(j["beam_width"]["read_deg"].get<double>(), 1.0, 0.05);
+  EXPECT_NE(j["beam_width"]["reading"].get<std::string>().find("width read from 6 frames"),
             std::string::npos);
 }
 
