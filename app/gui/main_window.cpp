@@ -622,8 +622,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
 }
 
 void MainWindow::readBeamWidth() {
-  read_beam_width_rad_ = 0.0;
-  beam_width_job_.discard();
+  beam_width_job_.discard();  // the width was reset with the mission (openMissionWith)
   // Every frame is a candidate (a run takes those it places in the navigation).
   if (mission_->sonar.horizontalBeamWidth() > 0.0) {
     return;

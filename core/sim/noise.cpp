@@ -186,8 +186,12 @@ void FrameNoise::add(cv::Mat& image, std::uint64_t frame_index) const {
   }
 }
 
+std::mt19937_64 FrameNoise::frameRandom(std::uint64_t frame_index) const {
+  return std::mt19937_64(spec_.seed * 0x9E3779B97F4A7C15ULL + frame_index);
+}
+
 void FrameNoise::addWhite(cv::Mat& image, std::uint64_t frame_index) const {
-  std::mt19937_64 rng(spec_.seed * 0x9E3779B97F4A7C15ULL + frame_index);
+  std::mt19937_64 rng = frameRandom(frame_index);
   std::gamma_distribution<float> speckle(static_cast<float>(spec_.speckle_looks),
                                          static_cast<float>(1.0 / spec_.speckle_looks));
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
@@ -211,7 +215,7 @@ void FrameNoise::addWhite(cv::Mat& image, std::uint64_t frame_index) const {
 }
 
 void FrameNoise::addAcrossBeams(cv::Mat& image, std::uint64_t frame_index) const {
-  std::mt19937_64 rng(spec_.seed * 0x9E3779B97F4A7C15ULL + frame_index);
+  std::mt19937_64 rng = frameRandom(frame_index);
   const double whole = std::floor(spec_.speckle_looks);
   const bool correlated_speckle = whole >= 1.0 && whole <= kMostCorrelatedLooks;
   const int looks = correlated_speckle ? static_cast<int>(whole) : 0;

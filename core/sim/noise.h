@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,8 @@ class FrameNoise {
   void add(cv::Mat& image, std::uint64_t frame_index) const;
 
  private:
+  /// The stream a frame's noise is drawn from, fixed by the seed and the frame.
+  std::mt19937_64 frameRandom(std::uint64_t frame_index) const;
   void addWhite(cv::Mat& image, std::uint64_t frame_index) const;
   void addAcrossBeams(cv::Mat& image, std::uint64_t frame_index) const;
 

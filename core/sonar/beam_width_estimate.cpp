@@ -7,6 +7,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/quantile.h"
 #include "sonar/bearing_deblur.h"
 
 namespace sonarcarve {
@@ -30,12 +31,6 @@ constexpr double kMinKneeNearNyquistDb = 20.0;
 // Widths are searched up to this many beam spacings: a wider beam's cutoff lies within the
 // low band, under kLowBand cycles per beam (0.8845 / 20 = 0.044).
 constexpr double kWidestInSpacings = 20.0;
-
-double median(std::vector<double> v) {
-  const auto middle = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), middle, v.end());
-  return *middle;
-}
 
 double toDb(double ratio) {
   return 10.0 * std::log10(std::max(ratio, 1e-300));
@@ -114,10 +109,10 @@ void BearingSpectrum::add(const cv::Mat& image) {
   const float* window = window_.ptr<float>(0);
   for (int r = 0; r < image.rows; ++r) {
     const float* in = image.ptr<float>(r);
-    const double mean = cv::mean(image.row(r))[0];
     if (!std::any_of(in, in + beams_, [&](float v) { return v != in[0]; })) {
       continue;
     }
+    const double mean = cv::mean(image.row(r))[0];
     float* out = rows.ptr<float>(count++);
     for (int c = 0; c < beams_; ++c) {
       out[c] = (in[c] - static_cast<float>(mean)) * window[c];
@@ -200,7 +195,8 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
   // Each width's spectrum as the rows would show it: its kernel's, as bright as the rows'
   // an octave under the cutoff, over the rows' floor (the counts' rounding, or noise), which
   // draws the steepest fall down a little when it lies near.
-  const double floor = median(std::vector<double>(s.begin() + top - top / 8, s.begin() + top + 1));
+  std::vector<double> floor_band(s.begin() + top - top / 8, s.begin() + top + 1);
+  const double floor = quantile(floor_band, 0.5);
   const int under = std::max(1, cut / 2);
   const double rows_under = std::pow(10.0, smoothedDb(s, under, m) / 10.0);
   // Widths that tie (their kernels fall most steeply in the same bin): the geometric middle.
@@ -221,12 +217,12 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
     }
   }
   if (best_gap > m) {
-    estimate.cutoff = 0.0;
     std::snprintf(text, sizeof text,
                   "the rows' spectrum falls most steeply at %.3f cycles per beam, "
                   "where no beam from twice the spacing to %.0f times it cuts off",
                   estimate.cutoff, kWidestInSpacings);
     estimate.reason = text;
+    estimate.cutoff = 0.0;
     return estimate;
   }
   estimate.width_rad = std::sqrt(tied_first * tied_last);

@@ -8,6 +8,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/quantile.h"
 #include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
@@ -112,12 +113,7 @@ double medianBeamSpacing(const BearingTable& table) {
   for (int b = 1; b < table.count(); ++b) {
     gaps.push_back(table.centre(b) - table.centre(b - 1));
   }
-  if (gaps.empty()) {
-    return 0.0;
-  }
-  const auto middle = gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2);
-  std::nth_element(gaps.begin(), middle, gaps.end());
-  return *middle;
+  return gaps.empty() ? 0.0 : quantile(gaps, 0.5);
 }
 
 std::vector<float> bearingBlurKernel(double width_rad, double spacing_rad, int max_half) {
