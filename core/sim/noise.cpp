@@ -10,7 +10,6 @@
 #include "common/error.h"
 #include "io/yaml_fields.h"
 #include "sonar/beam_pattern.h"
-#include "sonar/bearing_deblur.h"
 
 namespace sonarcarve {
 
@@ -164,7 +163,7 @@ FrameNoise::FrameNoise(const NoiseSpec& spec, const SonarModel& sonar) : spec_(s
       row[c] = backgroundMean(spec_, sonar, r, c) * to_sigma;
     }
   }
-  const double spacing = medianBeamSpacing(sonar.bearings());
+  const double spacing = sonar.bearings().medianSpacing();
   if (sonar.horizontalBeamWidth() > 0.0 && spacing > 0.0) {  // a single beam has no neighbours
     field_taps_ = amplitudeTaps(sonar.horizontalBeamWidth(), spacing, sonar.cols() - 1);
   }

@@ -189,7 +189,7 @@ BeamWidthEstimate estimateBeamWidth(const BearingSpectrum& spectrum, const Beari
   }
   // The width whose kernel's spectrum falls most steeply there (lower as the width grows):
   // searched over widths 1 % apart, from twice the spacing.
-  const double spacing = medianBeamSpacing(table);
+  const double spacing = table.medianSpacing();
   const double widest = std::min(table.fieldOfView(), kWidestInSpacings * spacing);
   int best_gap = n;
   // Each width's spectrum as the rows would show it: its kernel's, as bright as the rows'

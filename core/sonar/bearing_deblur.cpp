@@ -8,7 +8,6 @@
 
 #include "common/angles.h"
 #include "common/error.h"
-#include "common/quantile.h"
 #include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
@@ -108,14 +107,6 @@ class RowDeconvolution {
 
 }  // namespace
 
-double medianBeamSpacing(const BearingTable& table) {
-  std::vector<double> gaps;
-  for (int b = 1; b < table.count(); ++b) {
-    gaps.push_back(table.centre(b) - table.centre(b - 1));
-  }
-  return gaps.empty() ? 0.0 : quantile(gaps, 0.5);
-}
-
 std::vector<float> bearingBlurKernel(double width_rad, double spacing_rad, int max_half) {
   const std::vector<double> weights =
       meansOverBeams(SincSquaredBeam(width_rad), spacing_rad, max_half, false);
@@ -131,7 +122,7 @@ std::vector<float> bearingBlurKernel(double width_rad, double spacing_rad, int m
 }
 
 BearingDeblur::BearingDeblur(const SonarModel& sonar)
-    : width_rad_(sonar.horizontalBeamWidth()), spacing_rad_(medianBeamSpacing(sonar.bearings())) {
+    : width_rad_(sonar.horizontalBeamWidth()), spacing_rad_(sonar.bearings().medianSpacing()) {
   if (!(width_rad_ > 0.0) || !(spacing_rad_ > 0.0)) {
     return;
   }

@@ -27,9 +27,6 @@
 
 namespace sonarcarve {
 
-/// The median gap between neighbouring beams' centres, radians (0 for a single beam).
-double medianBeamSpacing(const BearingTable& table);
-
 /// The blur across bearing of beams `width_rad` wide (-3 dB, sinc^2) and `spacing_rad` apart:
 /// weights from beam -half to +half (half at most `max_half`), each the pattern's mean over
 /// that beam's interval, summing to 1.

@@ -7,6 +7,7 @@
 #include "common/angles.h"
 #include "common/error.h"
 #include "common/input_limits.h"
+#include "common/quantile.h"
 
 namespace sonarcarve {
 namespace {
@@ -74,6 +75,11 @@ BearingTable::BearingTable(std::vector<double> centres_rad, bool uniform)
     edges_[n] = centres_[n - 1] + 0.5 * (centres_[n - 1] - centres_[n - 2]);
   }
   fov_rad_ = edges_[n] - edges_[0];
+  std::vector<double> gaps;
+  for (std::size_t j = 1; j < n; ++j) {
+    gaps.push_back(centres_[j] - centres_[j - 1]);
+  }
+  median_spacing_ = gaps.empty() ? 0.0 : quantile(gaps, 0.5);
 }
 
 std::optional<int> BearingTable::beamOf(double bearing_rad) const {

@@ -29,6 +29,9 @@ class BearingTable {
   double fieldOfView() const { return fov_rad_; }
   /// Edges between beams: count() + 1 values, increasing.
   const std::vector<double>& edges() const { return edges_; }
+  /// The median gap between neighbouring beams' centres (0 for a single beam): a uniform
+  /// table's spacing, and what a non-uniform one is taken as where one spacing is needed.
+  double medianSpacing() const { return median_spacing_; }
 
   /// The beam whose interval contains `bearing_rad`, or nothing outside the field of view.
   std::optional<int> beamOf(double bearing_rad) const;
@@ -39,6 +42,7 @@ class BearingTable {
   std::vector<double> edges_;
   bool uniform_ = false;
   double fov_rad_ = 0.0;
+  double median_spacing_ = 0.0;
 };
 
 }  // namespace sonarcarve

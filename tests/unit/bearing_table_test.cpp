@@ -45,6 +45,14 @@ TEST(BearingTable, BeamBoundariesLieHalfwayBetweenNonUniformCentres) {
   EXPECT_EQ(t.beamOf(NAN), std::nullopt);
 }
 
+TEST(BearingTable, MedianSpacingIsTheMiddleGapBetweenCentres) {
+  EXPECT_NEAR(BearingTable::uniform(degToRad(130), 650).medianSpacing(), degToRad(0.2), 1e-12);
+  // Gaps 0.4, 0.1, 0.3, 0.1, 0.1: the one wide gap and the slight narrowing do not move it.
+  EXPECT_DOUBLE_EQ(BearingTable::fromCentres({-0.5, -0.1, 0.0, 0.3, 0.4, 0.5}).medianSpacing(),
+                   0.1);
+  EXPECT_EQ(BearingTable::fromCentres({0.2}).medianSpacing(), 0.0);
+}
+
 TEST(BearingTable, RejectsTablesThatDoNotIncrease) {
   EXPECT_THROW(BearingTable::fromCentres({}), Error);
   EXPECT_THROW(BearingTable::fromCentres({0.1, 0.1}), Error);
