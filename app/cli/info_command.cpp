@@ -6,7 +6,6 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <numeric>
 
 #include "cli/commands.h"
 #include "cli/source_flags.h"
@@ -20,6 +19,7 @@
 #include "io/oculus_log.h"
 #include "io/ros_bag.h"
 #include "pipeline/frame_stage.h"
+#include "pipeline/reconstruction.h"
 #include "sonar/bearing_deblur.h"
 
 namespace sonarcarve::cli {
@@ -231,11 +231,11 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
     }
     const Mission& mission = *opened;
     const MissionSummary summary = summarize(mission, true);
-    // A mission that does not say how wide its beams are: what a run reads from its frames.
-    std::vector<std::size_t> all(mission.frames.size());
-    std::iota(all.begin(), all.end(), std::size_t{0});
+    // A mission that does not say how wide its beams are: what a run at the default
+    // parameters reads from the frames it places.
     SilentProgress silent;
-    const BeamWidthChoice beams = chooseBeamWidth(mission, mission.sonar, all, silent);
+    const BeamWidthChoice beams = chooseBeamWidth(
+        mission, mission.sonar, placedFrames(mission, ReconstructionParams{}), silent);
     if (*json) {
       nlohmann::json j = summaryJson(mission.sonar, summary);
       // Beside the sonar's own fields, which a log's summary shares (before import).

@@ -30,7 +30,6 @@
 #include <QToolBar>
 #include <QUrl>
 #include <QVBoxLayout>
-#include <numeric>
 
 #include "accuracy_panel.h"
 #include "carve/occupancy_export.h"
@@ -623,15 +622,15 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
 
 void MainWindow::readBeamWidth() {
   beam_width_job_.discard();  // the width was reset with the mission (openMissionWith)
-  // Every frame is a candidate (a run takes those it places in the navigation).
   if (mission_->sonar.horizontalBeamWidth() > 0.0) {
     return;
   }
-  std::vector<std::size_t> all(mission_->frames.size());
-  std::iota(all.begin(), all.end(), std::size_t{0});
+  // The frames a run with these parameters reads.
   beam_width_job_.start(
-      [mission = mission_, all](JobContext& context) {
-        return chooseBeamWidth(*mission, mission->sonar, all, context).sonar.horizontalBeamWidth();
+      [mission = mission_,
+       frames = placedFrames(*mission_, params_panel_->params())](JobContext& context) {
+        return chooseBeamWidth(*mission, mission->sonar, frames, context)
+            .sonar.horizontalBeamWidth();
       },
       [this](double width) {
         read_beam_width_rad_ = width;

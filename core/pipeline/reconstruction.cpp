@@ -60,6 +60,10 @@ std::vector<std::size_t> selectedFrames(const Mission& mission,
   return selectFrames(mission.frames.size(), selectionOf(params));
 }
 
+std::vector<std::size_t> placedFrames(const Mission& mission, const ReconstructionParams& params) {
+  return indicesOf(placeFrames(mission, selectionOf(params), [](const FrameProblem&) {}));
+}
+
 Pipeline::Pipeline(const Mission& mission, ReconstructionParams params, ThreadPool& pool)
     : mission_(mission),
       params_(validated(params)),

@@ -104,4 +104,8 @@ SonarModel carvingSonar(const Mission& mission, const ReconstructionParams& para
 /// Indices of the frames the parameters select (first, last, stride).
 std::vector<std::size_t> selectedFrames(const Mission& mission, const ReconstructionParams& params);
 
+/// The selected frames that the navigation places: those a run reads, its noise model and
+/// the width of its beams among what it reads from them.
+std::vector<std::size_t> placedFrames(const Mission& mission, const ReconstructionParams& params);
+
 }  // namespace sonarcarve

@@ -11,6 +11,7 @@
 #include "io/frame_source.h"
 #include "pipeline/carve_stage.h"
 #include "pipeline/frame_stage.h"
+#include "pipeline/reconstruction.h"
 #include "pipeline/surface_stage.h"
 
 namespace sonarcarve {
@@ -89,6 +90,16 @@ TEST(FrameStage, FramesOutsideTheNavigationAreSkippedWithTheirTime) {
   ASSERT_EQ(skipped.problems.size(), 3u);
   EXPECT_EQ(skipped.problems.front().index, 7u);
   EXPECT_NE(skipped.problems.front().message.find("outside the navigation"), std::string::npos);
+}
+
+TEST(FrameStage, PlacedFramesAreTheSelectedOnesTheNavigationCovers) {
+  const Mission mission = ringMission(10, {}, 6.5);  // frames 7, 8, 9 after the track ends
+  ReconstructionParams params;
+  params.stride = 2;
+  EXPECT_EQ(placedFrames(mission, params), (std::vector<std::size_t>{0, 2, 4, 6}));
+  params.first_frame = 7;
+  params.stride = 1;
+  EXPECT_TRUE(placedFrames(mission, params).empty());
 }
 
 class CarveStageTest : public ::testing::Test {
