@@ -118,6 +118,9 @@ void NoiseModel::save(const std::filesystem::path& path) const {
      << vertical_aperture_rad_ << "bearings_rad" << cv::Mat(bearings_rad_).t();
   fs << "intensity_full_scale_db" << intensity_scale_.fullScaleDb() << "intensity_full_scale_count"
      << intensity_scale_.fullScaleCount();
+  if (intensity_scale_.gammaExponent() != 0.0) {
+    fs << "intensity_gamma" << intensity_scale_.gammaExponent();
+  }
   fs << "mean" << mean_ << "stddev" << stddev_ << "rayleigh_sigma" << rayleigh_sigma_;
   writeFileAtomically(path, fs.releaseAndGetString());
 }
@@ -165,17 +168,21 @@ NoiseModel NoiseModel::load(const std::filesystem::path& path) {
     fs["range_resolution_m"] >> model.range_resolution_m_;
     fs["vertical_aperture_rad"] >> model.vertical_aperture_rad_;
     // Absent (models written before intensity scales) or 0: linear.
-    const double full_scale_db = fs["intensity_full_scale_db"].empty()
-                                     ? 0.0
-                                     : static_cast<double>(fs["intensity_full_scale_db"]);
-    if (full_scale_db != 0.0) {
+    const auto number = [&](const char* key) {
+      return fs[key].empty() ? 0.0 : static_cast<double>(fs[key]);
+    };
+    const double full_scale_db = number("intensity_full_scale_db");
+    const double gamma = number("intensity_gamma");
+    if (full_scale_db != 0.0 || gamma != 0.0) {
       if (fs["intensity_full_scale_count"].empty()) {
         throw Error(file, "intensity_full_scale_count",
-                    "missing: expected the count of intensity_full_scale_db");
+                    "missing: expected the full scale of the intensity's decibels or gamma");
       }
+      const double full_scale_count = number("intensity_full_scale_count");
       try {
-        model.intensity_scale_ = IntensityScale::decibel(
-            full_scale_db, static_cast<double>(fs["intensity_full_scale_count"]));
+        model.intensity_scale_ = full_scale_db != 0.0
+                                     ? IntensityScale::decibel(full_scale_db, full_scale_count)
+                                     : IntensityScale::gamma(gamma, full_scale_count);
       } catch (const Error& e) {
         throw Error(file, "intensity_" + e.place(), e.message());
       }

@@ -16,10 +16,11 @@
 namespace sonarcarve {
 namespace {
 
-// The geometry a ping shares with the others of one mission.
-using GeometryKey = std::tuple<int, int, double, std::vector<double>>;
+// The geometry and the sample scale a ping shares with the others of one mission.
+using GeometryKey = std::tuple<int, int, double, std::vector<double>, IntensityScale::Key>;
 GeometryKey geometryOf(const OculusPing& p) {
-  return {p.n_ranges, p.n_beams, p.range_resolution_m, p.bearings_rad};
+  return {p.n_ranges, p.n_beams, p.range_resolution_m, p.bearings_rad,
+          oculusIntensityScale(p).key()};
 }
 
 std::string kilohertz(double hz) {
@@ -34,11 +35,19 @@ double oculusVerticalApertureDeg(const OculusPing& ping) {
   return ping.frequency_hz > 0.0 && ping.frequency_hz < 1.5e6 ? 20.0 : 12.0;
 }
 
+IntensityScale oculusIntensityScale(const OculusPing& ping) {
+  const double full_scale = ping.sample_bytes == 2 ? 65535.0 : 255.0;
+  return ping.gamma == 0
+             ? IntensityScale::linear()
+             : IntensityScale::gamma(std::round(ping.gamma / 255.0 * 1000.0) / 1000.0, full_scale);
+}
+
 SonarModel sonarModelFromPing(const OculusPing& ping, std::optional<double> aperture_deg) {
   return SonarModel("oculus-" + kilohertz(ping.frequency_hz),
                     RangeBins{0.0, ping.range_resolution_m, ping.n_ranges},
                     BearingTable::fromCentres(ping.bearings_rad),
-                    degToRad(aperture_deg.value_or(oculusVerticalApertureDeg(ping))));
+                    degToRad(aperture_deg.value_or(oculusVerticalApertureDeg(ping))))
+      .withIntensityScale(oculusIntensityScale(ping));
 }
 
 OculusImportPlan planOculusImport(const OculusLog& log, double time_offset_s,
@@ -71,12 +80,17 @@ OculusImportPlan planOculusImport(const OculusLog& log, double time_offset_s,
                         first.speed_of_sound_mps,
                         {}};
   if (plan.other_geometry > 0) {
-    plan.warnings.push_back(std::to_string(plan.other_geometry) + " of " +
-                            std::to_string(pings.size()) +
-                            " pings have another range window or bearing table than the main "
-                            "one (" +
-                            std::to_string(first.n_beams) + " beams x " +
-                            std::to_string(first.n_ranges) + " ranges) and are left out");
+    plan.warnings.push_back(
+        std::to_string(plan.other_geometry) + " of " + std::to_string(pings.size()) +
+        " pings have another range window, bearing table or sample "
+        "scale than the main one (" +
+        std::to_string(first.n_beams) + " beams x " + std::to_string(first.n_ranges) + " ranges, " +
+        plan.sonar.intensityScale().describe() + ") and are left out");
+  }
+  if (!plan.sonar.intensityScale().isLinear()) {
+    plan.warnings.push_back("the sonar sent its samples " + plan.sonar.intensityScale().describe() +
+                            " (the fire message's gammaCorrection " + std::to_string(first.gamma) +
+                            "): read back to its linear scale, which carving takes for power");
   }
   if (!std::is_sorted(used.begin(), used.end(), [&](std::size_t a, std::size_t b) {
         return pings[a].time_s < pings[b].time_s;
@@ -116,8 +130,8 @@ Mounting readMountingYaml(const std::filesystem::path& path) {
 
 namespace {
 
-// Writes a mission folder (new or empty) of `count` frames; a frame that cannot be read is
-// reported in `report` and left out.
+// Writes a mission folder (new or empty) of `count` frames, each as power (loadFrame's); a
+// frame that cannot be read is reported in `report` and left out.
 void writeMissionFolder(const ImportRequest& request, const SonarModel& sonar,
                         const Mounting& mounting, const NavTrack& nav, std::size_t count,
                         const std::function<Frame(std::size_t)>& frame_at, Progress& progress,
@@ -195,7 +209,11 @@ ImportReport importOculusToMission(const ImportRequest& request, Progress& progr
   writeMissionFolder(
       request, plan.sonar, mounting, *nav, plan.pings.size(),
       [&](std::size_t k) {
-        return Frame{plan.frame_times_s[k], plan.sonar.id(), log.decode(plan.pings[k]).image};
+        // As power, which the writer turns back into the sonar's own counts.
+        cv::Mat image = log.decode(plan.pings[k]).image;
+        plan.sonar.intensityScale().countsToPower(image, request.log.string(),
+                                                  "ping " + std::to_string(plan.pings[k]));
+        return Frame{plan.frame_times_s[k], plan.sonar.id(), image};
       },
       progress, report);
   return report;

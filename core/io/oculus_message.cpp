@@ -29,8 +29,8 @@ constexpr PingLayout kLayoutV1{
 constexpr PingLayout kLayoutV2{
     89, 93, 97, 105, 113, 121, 129, 137, 145, 153, 161, 162, 170, 172, 190, 194, kOculusPingV2Size};
 // The fire message, the same in both layouts up to the salinity.
-constexpr std::size_t kMasterMode = 16, kFlags = 20, kRange = 21, kGain = 29, kSpeedOfSound = 37,
-                      kSalinity = 45;
+constexpr std::size_t kMasterMode = 16, kGamma = 19, kFlags = 20, kRange = 21, kGain = 29,
+                      kSpeedOfSound = 37, kSalinity = 45;
 
 // Bounds-checked little-endian reads from a span.
 class Bytes {
@@ -121,6 +121,7 @@ OculusPing decodeOculusPing(std::span<const std::uint8_t> bytes, std::size_t off
   // From here every fixed field lies inside the message.
   const auto field = [&](std::size_t at) { return offset + at; };
   p.master_mode = in.at<std::uint8_t>(field(kMasterMode), "masterMode");
+  p.gamma = in.at<std::uint8_t>(field(kGamma), "gammaCorrection");
   p.flags = in.at<std::uint8_t>(field(kFlags), "flags");
   p.range_demand = in.at<double>(field(kRange), "range");
   p.gain_percent = in.at<double>(field(kGain), "gainPercent");

@@ -37,7 +37,8 @@ IntensityScale intensityFromYaml(const YAML::Node& node, const YamlFields& field
     return IntensityScale::linear();
   }
   const char* expected =
-      "expected 'linear' or a mapping {scale: decibel, full_scale_db, full_scale_count}";
+      "expected 'linear' or a mapping {scale: decibel, full_scale_db, full_scale_count} or "
+      "{scale: gamma, gamma, full_scale_count}";
   if (node.IsScalar()) {
     if (fields.text(node, path) != "linear") {
       fields.fail(node, path, expected);
@@ -52,8 +53,18 @@ IntensityScale intensityFromYaml(const YAML::Node& node, const YamlFields& field
   if (name == "linear") {
     return IntensityScale::linear();
   }
+  if (name == "gamma") {
+    const YAML::Node gamma = fields.child(node, path, "gamma");
+    try {
+      return IntensityScale::gamma(fields.positive(gamma, path + ".gamma"),
+                                   fields.positive(fields.child(node, path, "full_scale_count"),
+                                                   path + ".full_scale_count"));
+    } catch (const Error& e) {
+      fields.fail(gamma, path + ".gamma", e.message());
+    }
+  }
   if (name != "decibel") {
-    fields.fail(scale, path + ".scale", "expected 'linear' or 'decibel'");
+    fields.fail(scale, path + ".scale", "expected 'linear', 'decibel' or 'gamma'");
   }
   return IntensityScale::decibel(
       fields.positive(fields.child(node, path, "full_scale_db"), path + ".full_scale_db"),
@@ -62,6 +73,13 @@ IntensityScale intensityFromYaml(const YAML::Node& node, const YamlFields& field
 
 void emitIntensity(YAML::Emitter& out, const IntensityScale& scale) {
   out << YAML::Flow << YAML::BeginMap;
+  if (!scale.isDecibel()) {
+    out << YAML::Key << "scale" << YAML::Value << "gamma";
+    out << YAML::Key << "gamma" << YAML::Value << shortestNumber(scale.gammaExponent());
+    out << YAML::Key << "full_scale_count" << YAML::Value << shortestNumber(scale.fullScaleCount());
+    out << YAML::EndMap;
+    return;
+  }
   out << YAML::Key << "scale" << YAML::Value << "decibel";
   out << YAML::Key << "full_scale_db" << YAML::Value << shortestNumber(scale.fullScaleDb());
   out << YAML::Key << "full_scale_count" << YAML::Value << shortestNumber(scale.fullScaleCount());

@@ -37,9 +37,31 @@ IntensityScale IntensityScale::decibel(double full_scale_db, double full_scale_c
   return scale;
 }
 
+IntensityScale IntensityScale::gamma(double gamma, double full_scale_count) {
+  if (!(gamma > 0.0) || !(gamma <= kLargestGamma)) {
+    throw Error("intensity scale", "gamma",
+                "expected a gamma over 0 and at most " + shortestNumber(kLargestGamma) + ", got " +
+                    shortestNumber(gamma));
+  }
+  if (!(full_scale_count > 0.0) || !std::isfinite(full_scale_count)) {
+    throw Error("intensity scale", "full_scale_count",
+                "expected a positive count, got " + shortestNumber(full_scale_count));
+  }
+  IntensityScale scale;
+  if (gamma != 1.0) {
+    scale.gamma_ = gamma;
+    scale.full_scale_count_ = full_scale_count;
+  }
+  return scale;
+}
+
 std::string IntensityScale::describe() const {
   if (isLinear()) {
     return "linear";
+  }
+  if (!isDecibel()) {
+    return "gamma " + shortestNumber(gamma_) + " (" + shortestNumber(full_scale_count_) +
+           " counts full scale)";
   }
   return "decibel (" + shortestNumber(full_scale_count_) +
          " counts = " + shortestNumber(full_scale_db_) + " dB)";
@@ -61,6 +83,14 @@ void IntensityScale::countsToPower(cv::Mat& image, const std::string& what,
             std::to_string(at.x),
         "count " + shortestNumber(most) + " is over the sonar's full scale (" + describe() + ")");
   }
+  if (!isDecibel()) {
+    // power = F (count / F)^(1 / gamma); negative counts (none a sonar sends) are no echo.
+    cv::max(image, 0.0f, image);
+    image.convertTo(image, CV_32F, 1.0 / full_scale_count_);
+    cv::pow(image, 1.0 / gamma_, image);
+    image.convertTo(image, CV_32F, full_scale_count_);
+    return;
+  }
   // power = exp(count * ln(10) * dB_per_count / 10); count 0, the bottom of the scale, is no
   // echo at all (a noise-free frame's empty water must stay dark, not become a floor of 1).
   const cv::Mat no_echo = image <= 0.0f;
@@ -76,6 +106,13 @@ cv::Mat IntensityScale::powerToCounts(const cv::Mat& image) const {
     return image.clone();
   }
   cv::Mat counts;
+  if (!isDecibel()) {
+    cv::max(image, 0.0f, counts);
+    counts.convertTo(counts, CV_32F, 1.0 / full_scale_count_);
+    cv::pow(counts, gamma_, counts);
+    counts.convertTo(counts, CV_32F, full_scale_count_);
+    return counts;
+  }
   cv::max(image, 1.0f, counts);  // powers up to count 1's, and no echo, are count 0
   cv::log(counts, counts);
   const double counts_per_neper = full_scale_count_ * 10.0 / (full_scale_db_ * std::log(10.0));

@@ -53,10 +53,12 @@ TEST(CliImport, ImportedMissionAgreesWithTheLog) {
   EXPECT_EQ(from_mission["sonar"], from_log["sonar"]);
   EXPECT_EQ(from_mission["frames"], from_log["frames"]);
   EXPECT_EQ(from_mission["navigation"], from_log["navigation"]);
-  // The image is stored exactly.
+  // The image is stored exactly, in the sonar's own counts: bytes of gamma 0.5 (the fire
+  // message's gammaCorrection 127), which a frame loads as the sonar's linear scale.
   const Mission m = readMission(mission);
+  EXPECT_EQ(m.sonar.intensityScale(), IntensityScale::gamma(0.498, 255.0));
   const Frame frame = loadFrame(m, 0);
-  EXPECT_NEAR(cv::mean(frame.image)[0], 55.857, 1e-3);
+  EXPECT_NEAR(cv::mean(m.sonar.intensityScale().powerToCounts(frame.image))[0], 55.857, 1e-3);
 }
 
 TEST(CliImport, NavigationMappingMountingAndTimeOffset) {

@@ -83,10 +83,10 @@ std::vector<std::uint8_t> encodeOculusPing(const OculusPingSpec& s) {
   Writer w;
   putHeader(w, s.msg_id, s.version, message_size - 16);
   // OculusSimpleFireMessage(2)
-  w.put<std::uint8_t>(2);  // masterMode: high frequency
-  w.put<std::uint8_t>(0);  // pingRate
-  w.put<std::uint8_t>(0);  // networkSpeed
-  w.put<std::uint8_t>(0);  // gammaCorrection
+  w.put<std::uint8_t>(2);        // masterMode: high frequency
+  w.put<std::uint8_t>(0);        // pingRate
+  w.put<std::uint8_t>(0);        // networkSpeed
+  w.put<std::uint8_t>(s.gamma);  // gammaCorrection
   w.put<std::uint8_t>(
       static_cast<std::uint8_t>(0x09 | (s.sixteen_bit ? 0x02 : 0) | (s.gain ? 0x04 : 0)));  // flags
   w.put<double>(5.0);                                                                       // range

@@ -20,6 +20,7 @@ struct OculusPingSpec {
   int n_ranges = 10;
   bool sixteen_bit = false;
   bool gain = false;
+  std::uint8_t gamma = 0;  ///< the fire message's gammaCorrection (0: linear)
   double range_resolution_m = 0.01;
   double frequency_hz = 2.1e6;
   double speed_of_sound_mps = 1500.0;

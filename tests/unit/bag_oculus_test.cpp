@@ -115,7 +115,9 @@ struct OculusReference {
 OculusReference oculusReference(const std::vector<std::uint8_t>& ping) {
   const OculusLog log = OculusLog::fromBytes(ping, "fixture");
   const OculusImportPlan plan = planOculusImport(log, 0.0, std::nullopt);
-  return {plan.sonar, log.decode(plan.pings.front()).image};
+  cv::Mat power = log.decode(plan.pings.front()).image;  // counts as sent, then as loaded
+  plan.sonar.intensityScale().countsToPower(power, "fixture");
+  return {plan.sonar, power};
 }
 
 void expectSameFrames(const Mission& read, const OculusReference& reference,

@@ -184,42 +184,53 @@ TEST(NoiseModel, AModelOfAnotherGeometryIsRefusedWithAClearMessage) {
   EXPECT_THROW(Detector(params, nullptr, sonar), Error);  // no model at all
 }
 
+// The model learned from three empty-water frames of `sonar` (power 200 +- 20, stored in its
+// counts), and that model saved in `dir` and loaded back.
+std::pair<NoiseModel, NoiseModel> learnedAndReloaded(const SonarModel& sonar,
+                                                     const std::filesystem::path& dir) {
+  writeEmptyWater(dir / "empty", sonar, 3);
+  SilentProgress progress;
+  NoiseModel model = NoiseModel::learn(readMission(dir / "empty"), progress);
+  model.save(dir / "noise.yaml");
+  return {std::move(model), NoiseModel::load(dir / "noise.yaml")};
+}
+
 // A model's statistics are of power read on its sonar's intensity scale: it keeps that scale
 // through its file and refuses a sonar whose counts mean something else.
 TEST(NoiseModel, KeepsItsIntensityScaleAndRefusesAnother) {
-  test::ScratchDir dir;
-  const SonarModel sonar =
-      smallSonar(50, 20).withIntensityScale(IntensityScale::decibel(80.0, 255.0));
-  writeEmptyWater(dir.path() / "empty", sonar, 3);
-  SilentProgress progress;
-  const NoiseModel model = NoiseModel::learn(readMission(dir.path() / "empty"), progress);
-  // The frames (power 200 +- 20) were stored as bytes near 73 and read back as power: every
-  // sample within half a byte, 10^(4/255) - 1 = 3.7 %, so their mean too.
-  EXPECT_NEAR(cv::mean(model.mean())[0], 200.0, 200.0 * 0.037);
-  model.save(dir.path() / "noise.yaml");
-  const NoiseModel back = NoiseModel::load(dir.path() / "noise.yaml");
-  EXPECT_NO_THROW(back.checkGeometry(sonar, "decibel sonar"));
-  try {
-    back.checkGeometry(smallSonar(50, 20), "linear sonar");
-    ADD_FAILURE() << "accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("decibel (255 counts = 80 dB), this sonar's is linear"),
-              std::string::npos)
-        << e.what();
-  }
-  // A file with the decibels but not their count names the key it lacks.
-  std::string text = test::readText(dir.path() / "noise.yaml");
-  const auto at = text.find("intensity_full_scale_count");
-  ASSERT_NE(at, std::string::npos);
-  text.erase(at, text.find('\n', at) - at);
-  test::writeText(dir.path() / "broken.yaml", text);
-  try {
-    NoiseModel::load(dir.path() / "broken.yaml");
-    ADD_FAILURE() << "accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("broken.yaml: intensity_full_scale_count: missing"),
-              std::string::npos)
-        << e.what();
+  // The frames are stored in the sonar's counts and read back as power, every sample within
+  // half a count: decibel bytes near 73, 10^(4/255) - 1 = 3.7 %; gamma 0.5 counts near 3,620 of
+  // 65,535, 0.03 % (1 % taken: the mean of 3,000 samples of deviation 20 is itself 200 +- 0.4).
+  const std::pair<IntensityScale, double> scales[] = {{IntensityScale::decibel(80.0, 255.0), 0.037},
+                                                      {IntensityScale::gamma(0.5, 65535.0), 0.01}};
+  for (const auto& [scale, tolerance] : scales) {
+    test::ScratchDir dir;
+    const SonarModel sonar = smallSonar(50, 20).withIntensityScale(scale);
+    const auto [model, back] = learnedAndReloaded(sonar, dir.path());
+    EXPECT_NEAR(cv::mean(model.mean())[0], 200.0, 200.0 * tolerance) << scale.describe();
+    EXPECT_NO_THROW(back.checkGeometry(sonar, "the same sonar"));
+    try {
+      back.checkGeometry(smallSonar(50, 20), "linear sonar");
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(scale.describe() + ", this sonar's is linear"),
+                std::string::npos)
+          << e.what();
+    }
+    // A file with the decibels or gamma but not their full scale names the key it lacks.
+    std::string text = test::readText(dir.path() / "noise.yaml");
+    const auto at = text.find("intensity_full_scale_count");
+    ASSERT_NE(at, std::string::npos);
+    text.erase(at, text.find('\n', at) - at);
+    test::writeText(dir.path() / "broken.yaml", text);
+    try {
+      NoiseModel::load(dir.path() / "broken.yaml");
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("broken.yaml: intensity_full_scale_count: missing"),
+                std::string::npos)
+          << e.what();
+    }
   }
 }
 

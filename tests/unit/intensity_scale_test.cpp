@@ -79,6 +79,34 @@ TEST(IntensityScale, CountsOverFullScaleAreRefusedNamingThePixel) {
   EXPECT_NO_THROW(IntensityScale::decibel(80.0, 255.0).countsToPower(image, "f.png"));
 }
 
+TEST(IntensityScale, GammaCountsAreTheLinearScaleRaisedToTheGamma) {
+  // An Oculus asked for gamma 0.5 sends bytes of 255 (x / X)^0.5.
+  const IntensityScale oculus = IntensityScale::gamma(0.5, 255.0);
+  EXPECT_FALSE(oculus.isLinear());
+  EXPECT_FALSE(oculus.isDecibel());
+  EXPECT_EQ(oculus.describe(), "gamma 0.5 (255 counts full scale)");
+  cv::Mat power = everyByte();
+  oculus.countsToPower(power, "bytes");
+  for (int c = 0; c < 256; ++c) {
+    const double expected = 255.0 * (c / 255.0) * (c / 255.0);
+    ASSERT_NEAR(power.at<float>(0, c), expected, 1e-5 * 255.0) << c;
+  }
+  // Half the counts are a quarter of the scale: 10 dB of counts span 20 dB of the echo.
+  EXPECT_NEAR(power.at<float>(0, 255) / power.at<float>(0, 25), 104.0, 0.05);
+  // Far under half a count back: rounding on writing gives the byte again.
+  EXPECT_LT(cv::norm(oculus.powerToCounts(power), everyByte(), cv::NORM_INF), 1e-3);
+  // Counts over full scale are refused, as on a decibel scale.
+  cv::Mat over = (cv::Mat_<float>(1, 1) << 256.0f);
+  EXPECT_THROW(oculus.countsToPower(over, "f.png"), Error);
+  // Gamma 1 is linear.
+  EXPECT_TRUE(IntensityScale::gamma(1.0, 255.0).isLinear());
+  EXPECT_THROW(IntensityScale::gamma(0.0, 255.0), Error);
+  EXPECT_THROW(IntensityScale::gamma(-0.5, 255.0), Error);
+  EXPECT_THROW(IntensityScale::gamma(10.5, 255.0), Error);
+  EXPECT_THROW(IntensityScale::gamma(NAN, 255.0), Error);
+  EXPECT_THROW(IntensityScale::gamma(0.5, 0.0), Error);
+}
+
 TEST(IntensityScale, NonPositiveOrInfiniteScalesAreRefused) {
   EXPECT_THROW(IntensityScale::decibel(301.0, 255.0), Error);  // 10^30.1: too near a float's limit
   EXPECT_NO_THROW(IntensityScale::decibel(300.0, 255.0));

@@ -82,7 +82,10 @@ TEST_F(MissionErrors, InvalidIntensityScale) {
   const std::string original = readText(mission_ / "mission.yaml");
   const std::pair<std::string, std::string> cases[] = {
       {"{scale: decibels, full_scale_db: 80, full_scale_count: 255}",
-       "sonar.intensity.scale: expected 'linear' or 'decibel'"},
+       "sonar.intensity.scale: expected 'linear', 'decibel' or 'gamma'"},
+      {"{scale: gamma, gamma: 12, full_scale_count: 255}",
+       "sonar.intensity.gamma: expected a gamma over 0 and at most 10"},
+      {"{scale: gamma, gamma: 0.5}", "sonar.intensity.full_scale_count: missing"},
       {"{scale: decibel, full_scale_db: 0, full_scale_count: 255}",
        "sonar.intensity.full_scale_db: expected a positive number"},
       {"{scale: decibel, full_scale_db: 80}", "sonar.intensity.full_scale_count: missing"},

@@ -102,6 +102,10 @@ TEST(MissionFormat, ADecibelSonarIsStoredInItsOwnCountsAndReadBackAsTheSamePower
   roundTrip(test::paperSonar().withIntensityScale(IntensityScale::decibel(80.0, 255.0)));
 }
 
+TEST(MissionFormat, AGammaSonarIsStoredInItsOwnCountsAndReadBackAsTheSamePower) {
+  roundTrip(test::paperSonar().withIntensityScale(IntensityScale::gamma(0.5, 65535.0)));
+}
+
 TEST(MissionFormat, ASonarsHorizontalBeamWidthIsKept) {
   // Beams five times as wide as their spacing; a mission that does not say has none (0).
   roundTrip(test::paperSonar().withHorizontalBeamWidth(degToRad(1.0)));

@@ -9,6 +9,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "io/frame_source.h"
 #include "io/import.h"
 #include "io/mission.h"
 #include "io/oculus_log.h"
@@ -33,6 +34,7 @@ TEST(OculusFixture, DecodesTheRealPingAsItsReadmeSays) {
   EXPECT_EQ(p.header.msg_version, 0);
   EXPECT_EQ(p.header.payload_size, 182000u);
   EXPECT_EQ(p.master_mode, 2);
+  EXPECT_EQ(p.gamma, 127);  // gamma correction 0.5
   EXPECT_EQ(p.flags, 0b11001);
   EXPECT_DOUBLE_EQ(p.range_demand, 2.0);
   EXPECT_DOUBLE_EQ(p.gain_percent, 50.0);
@@ -70,6 +72,12 @@ TEST(OculusFixture, SonarModelUsesTheTableAsIs) {
   EXPECT_DOUBLE_EQ(plan.sonar.range().min_m, 0.0);
   EXPECT_NEAR(radToDeg(plan.sonar.verticalAperture()), 12.0, 1e-9);  // 2.1 MHz: high frequency
   EXPECT_EQ(plan.sonar.id(), "oculus-2099khz");
+  // Its bytes were sent with gamma correction 0.5 (127 of 255), said as a warning.
+  EXPECT_EQ(plan.sonar.intensityScale(), IntensityScale::gamma(0.498, 255.0));
+  EXPECT_TRUE(std::any_of(plan.warnings.begin(), plan.warnings.end(), [](const std::string& w) {
+    return w.find("gamma 0.498 (255 counts full scale) (the fire message's gammaCorrection 127)") !=
+           std::string::npos;
+  }));
   ASSERT_EQ(plan.frame_times_s.size(), 1u);
   // Version 0 ping time: pingStartTime 3103899264 read as microseconds.
   EXPECT_NEAR(plan.frame_times_s[0], 3103.899264, 1e-9);
@@ -371,6 +379,42 @@ TEST(OculusRecordings, BrokenRecordingsNameTheByte) {
               {"z.oculus", "byte 92", "corrupt compressed item"});
 }
 
+TEST(OculusImport, PingsLoadOnTheSonarsLinearScaleAndAnotherGammaIsLeftOut) {
+  test::ScratchDir dir;
+  std::vector<std::vector<std::uint8_t>> parts;
+  for (int i = 0; i < 3; ++i) {
+    OculusPingSpec spec;
+    spec.sixteen_bit = true;
+    spec.ping_start_time = 1e6 * i;
+    spec.gamma = i == 2 ? 255 : 127;  // the last ping linear
+    parts.push_back(encodeOculusPing(spec));
+  }
+  const auto log = dir.path() / "g.bin";
+  test::writeBytes(log.string(), test::concat(parts));
+  const OculusLog read = OculusLog::open(log);
+  const OculusImportPlan plan = planOculusImport(read, 0.0, std::nullopt);
+  EXPECT_EQ(plan.sonar.intensityScale(), IntensityScale::gamma(0.498, 65535.0));
+  EXPECT_EQ(plan.pings, (std::vector<std::size_t>{0, 1}));
+  EXPECT_EQ(oculusIntensityScale(read.decode(2)), IntensityScale::linear());
+  // In place and imported, a frame loads as 65535 (count / 65535)^(1 / 0.498).
+  ImportRequest request;
+  request.log = log;
+  request.out = dir.path() / "mission";
+  SilentProgress progress;
+  EXPECT_EQ(importOculusToMission(request, progress).frames_written, 2u);
+  OculusPingSpec spec;
+  spec.sixteen_bit = true;
+  for (const Mission& mission : {openMission(log), readMission(request.out)}) {
+    const Frame frame = loadFrame(mission, 1);
+    for (const auto& [row, col] : {std::pair{0, 0}, std::pair{4, 7}, std::pair{9, 15}}) {
+      const double count = oculusSample(spec, row, col);
+      EXPECT_NEAR(frame.image.at<float>(row, col), 65535.0 * std::pow(count / 65535.0, 1 / 0.498),
+                  1e-4 * 65535.0)
+          << mission.folder << " " << row << "," << col;
+    }
+  }
+}
+
 TEST(OculusImport, KeepsTheMainGeometryAndStopsWhenCancelled) {
   test::ScratchDir dir;
   std::vector<std::vector<std::uint8_t>> parts;
@@ -394,7 +438,7 @@ TEST(OculusImport, KeepsTheMainGeometryAndStopsWhenCancelled) {
     return std::any_of(report.warnings.begin(), report.warnings.end(),
                        [&](const std::string& w) { return w.find(text) != std::string::npos; });
   };
-  EXPECT_TRUE(has("1 of 4 pings have another range window or bearing table"));
+  EXPECT_TRUE(has("1 of 4 pings have another range window, bearing table or sample scale"));
   EXPECT_TRUE(has("sorted by time"));
   EXPECT_TRUE(has("stationary"));
   const Mission mission = readMission(request.out);
