@@ -43,6 +43,9 @@ struct CarveParams {
   /// level, so it carves only inside +-aperture/2, where the beam keeps half its power.
   enum class DarkPixels { Exact, BelowDetection };
   DarkPixels dark_pixels = DarkPixels::BelowDetection;
+  /// Exact dark pixels hold under this power: half a count on the sonar's intensity scale
+  /// (IntensityScale::darkPower; the pipeline sets it; 0.5 for linear counts).
+  double dark_pixel_level = 0.5;
   /// Robust carving (fast engine): a voxel is carved once this many views
   /// have found it empty; 1 is the seed paper's rule (one view of empty water carves). More
   /// votes tolerate views placed a little off by their navigation; they carve ghosts and
@@ -62,12 +65,10 @@ struct CarveParams {
   bool seabed_aware = true;
 };
 
-/// An image of whole counts holds under half a count where it reads 0.
-inline constexpr double kDarkPixelCounts = 0.5;
-
 /// The keep level a frame carves with. With exact dark pixels (whole counts, no detector) it
 /// is at least what a dark pixel bounds at the -3 dB edge of the aperture (half a count over
-/// half the beam's power: 1 count), so that a dark pixel always carves inside +-aperture/2, as
+/// half the beam's power: 1 count of a linear sonar), so that a dark pixel always carves inside
+/// +-aperture/2, as
 /// in the seed paper: a mission whose bright returns are only a few tens of counts would
 /// otherwise keep returns under one count, which its images cannot show, and carve nothing.
 inline double effectiveKeepLevel(const CarveParams& params) {
@@ -75,7 +76,7 @@ inline double effectiveKeepLevel(const CarveParams& params) {
     return params.keep_level;
   }
   constexpr double kGainAtApertureEdge = 0.5;  // -3 dB
-  return std::max(params.keep_level, kDarkPixelCounts / kGainAtApertureEdge);
+  return std::max(params.keep_level, params.dark_pixel_level / kGainAtApertureEdge);
 }
 
 /// Whether a map carved with `params` keeps each voxel's view and vote counts (2 bytes a

@@ -42,6 +42,7 @@ struct FrameView {
   // Beam-aware carving (CarveParams::beam_aware).
   bool beam_aware = false;
   bool dark_is_exact = false;
+  float dark_level = 0.5f;  // what an exact dark pixel may hold (CarveParams::dark_pixel_level)
   float keep_level = 0.0f;
   float sin2_carved = 0.0f;  // sin^2 of the elevation this frame can carve to
   // Inward normals of the bearing wedge's planes (CarvingGeometry; vertical: x and y only).
@@ -50,8 +51,6 @@ struct FrameView {
   // Robust carving: views that must vote to carve a voxel (CarveParams::carve_votes).
   int carve_votes = 1;
 };
-
-constexpr float kDarkPixelLevel = static_cast<float>(kDarkPixelCounts);
 
 // Seabed-aware carving: a pixel may hold up to this many times the seabed's fitted prediction
 // within this many range bins of it and still be the seabed's alone. The bins take the fit's
@@ -75,12 +74,12 @@ constexpr double kSeabedDoubtBehindDetector_m = 0.03;
 // detection level, far above the keep level, so it bounds nothing off the axis, and a faint
 // detected pixel, which holds more than a dark one, must not carve where a dark one cannot.
 double carvedHalfElevation(const cv::Mat& pixels, const SonarModel& sonar, float keep_level,
-                           bool dark_is_exact, double main_lobe_half) {
+                           bool dark_is_exact, float dark_level, double main_lobe_half) {
   const double aperture_half = 0.5 * sonar.verticalAperture();
   if (!dark_is_exact) {
     return aperture_half;
   }
-  double faintest = kDarkPixelLevel;
+  double faintest = dark_level;
   double min_lit = 0.0;
   cv::minMaxLoc(pixels, &min_lit, nullptr, nullptr, nullptr, pixels > 0.0f);
   if (min_lit > 0.0) {
@@ -276,7 +275,7 @@ BlockChange carveBlock(const CarvingGeometry& g, const FrameView& f,
           if (intensity > 0.0f) {
             bound = intensity * g.inverseGain(std::abs(p.z()) / r);
           } else if (f.dark_is_exact) {
-            bound = kDarkPixelLevel * g.inverseGain(std::abs(p.z()) / r);
+            bound = f.dark_level * g.inverseGain(std::abs(p.z()) / r);
             if (bound > f.keep_level) {
               continue;  // near the null, where a surface too returns less than a count
             }
@@ -372,13 +371,14 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
                   T_sonar_world.linear().cast<float>(), T_sonar_world.translation().cast<float>()};
   frame.beam_aware = carvesMainLobe(sonar, params_);
   frame.dark_is_exact = params_.dark_pixels == CarveParams::DarkPixels::Exact;
+  frame.dark_level = static_cast<float>(params_.dark_pixel_level);
   frame.keep_level = static_cast<float>(effectiveKeepLevel(params_));
   frame.carve_votes = params_.carve_votes;
   frame.left_normal = geometry_.leftNormal().head<2>().cast<float>();
   frame.right_normal = geometry_.rightNormal().head<2>().cast<float>();
   const double half_elevation =
       frame.beam_aware ? carvedHalfElevation(pixels, sonar, frame.keep_level, frame.dark_is_exact,
-                                             geometry_.carvedHalfElevation())
+                                             frame.dark_level, geometry_.carvedHalfElevation())
                        : geometry_.carvedHalfElevation();
   const double sin_half = std::sin(half_elevation);
   const double cos_half = std::cos(half_elevation);

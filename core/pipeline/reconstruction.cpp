@@ -154,6 +154,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
     stage.carve.dark_pixels = darkPixelsAreExact(noise.detector)
                                   ? CarveParams::DarkPixels::Exact
                                   : CarveParams::DarkPixels::BelowDetection;
+    stage.carve.dark_pixel_level = sonar_.intensityScale().darkPower();
     const double used = effectiveKeepLevel(stage.carve);
     result.keep_level.raised_to_a_count = used > stage.carve.keep_level;
     result.keep_level.level = stage.carve.keep_level = used;

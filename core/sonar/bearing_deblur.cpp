@@ -18,10 +18,6 @@ namespace {
 // sub-rays sample it), a beam half as wide as its spacing keeps 94 %, one as wide 79 % (9 % in
 // each neighbour) and one five times as wide 19 %.
 constexpr double kSharpShare = 0.9;
-// Exact frames: the sonar's whole counts read 0 under half a count (carve/carve_params.h,
-// kDarkPixelCounts), so the deconvolution's residue there is dark. Left lit, it let every
-// frame carve to the main lobe's edge (docs/benchmarks.md).
-constexpr float kHalfCount = 0.5f;
 // Estimates that fall this far under their row's brightest are dark: repeated products
 // would otherwise reach denormal floats, slow to compute with.
 constexpr float kNegligible = 1e-7f;
@@ -122,7 +118,9 @@ std::vector<float> bearingBlurKernel(double width_rad, double spacing_rad, int m
 }
 
 BearingDeblur::BearingDeblur(const SonarModel& sonar)
-    : width_rad_(sonar.horizontalBeamWidth()), spacing_rad_(sonar.bearings().medianSpacing()) {
+    : width_rad_(sonar.horizontalBeamWidth()),
+      spacing_rad_(sonar.bearings().medianSpacing()),
+      dark_power_(static_cast<float>(sonar.intensityScale().darkPower())) {
   if (!(width_rad_ > 0.0) || !(spacing_rad_ > 0.0)) {
     return;
   }
@@ -177,7 +175,7 @@ cv::Mat BearingDeblur::apply(const cv::Mat& image, bool exact_dark) const {
     deconvolution.run(row, lo, hi, exact_dark, iterations);
   }
   if (exact_dark) {
-    cv::threshold(out, out, kHalfCount, 0.0, cv::THRESH_TOZERO);
+    cv::threshold(out, out, dark_power_, 0.0, cv::THRESH_TOZERO);
   }
   return out;
 }

@@ -56,6 +56,10 @@ class BearingDeblur {
   std::vector<float> kernel_;
   double width_rad_ = 0.0;
   double spacing_rad_ = 0.0;
+  // Exact frames: the sonar's whole counts read 0 under half a count (its intensity scale's
+  // dark power), so the deconvolution's residue there is dark. Left lit, it let every frame
+  // carve to the main lobe's edge (docs/benchmarks.md).
+  float dark_power_ = 0.5f;
 };
 
 }  // namespace sonarcarve

@@ -55,6 +55,17 @@ IntensityScale IntensityScale::gamma(double gamma, double full_scale_count) {
   return scale;
 }
 
+double IntensityScale::darkPower() const {
+  constexpr double kHalf = 0.5;
+  if (isLinear()) {
+    return kHalf;
+  }
+  if (isDecibel()) {
+    return std::pow(10.0, kHalf * full_scale_db_ / full_scale_count_ / 10.0);
+  }
+  return full_scale_count_ * std::pow(kHalf / full_scale_count_, 1.0 / gamma_);
+}
+
 std::string IntensityScale::describe() const {
   if (isLinear()) {
     return "linear";

@@ -41,6 +41,9 @@ class IntensityScale {
   double fullScaleDb() const { return full_scale_db_; }        ///< 0 unless decibel
   double gammaExponent() const { return gamma_; }              ///< 0 unless gamma
   double fullScaleCount() const { return full_scale_count_; }  ///< 0 if linear
+  /// The power under which a pixel reads count 0 (half a count's): what a dark pixel of an
+  /// image without noise may hold.
+  double darkPower() const;
   /// In words, for reports: "linear", "decibel (255 counts = 80 dB)" or "gamma 0.5 (255
   /// counts full scale)".
   std::string describe() const;

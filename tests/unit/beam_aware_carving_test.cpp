@@ -42,10 +42,11 @@ class BeamAwareCarving : public ::testing::Test {
 
   std::unique_ptr<Carver> make(bool beam_aware,
                                CarveParams::DarkPixels dark = CarveParams::DarkPixels::Exact,
-                               double keep_level = kKeepLevel) {
+                               double keep_level = kKeepLevel, double dark_level = 0.5) {
     CarveParams params;
     params.beam_aware = beam_aware;
     params.keep_level = keep_level;
+    params.dark_pixel_level = dark_level;
     params.dark_pixels = dark;
     params.region = Eigen::AlignedBox3d(target_ - Eigen::Vector3d::Constant(0.6),
                                         target_ + Eigen::Vector3d::Constant(0.6));
@@ -161,6 +162,16 @@ TEST_F(BeamAwareCarving, ADarkPixelNearTheNullDoesNotCarve) {
   darkViewFromBelow(*carver, 22.0);
   EXPECT_EQ(carver->value(voxelOf(target_)), VoxelMap::kUnknown);
   // The same dark view carves where the beam is strong enough: 15 degrees up (-8 dB).
+  EXPECT_EQ(carver->value(voxelOf(below_target_)), 0.0f);
+}
+
+TEST_F(BeamAwareCarving, ADarkPixelBoundsWhatHalfACountHoldsOnTheSonarsScale) {
+  // A sonar whose half count is a power of 20 (a coarse decibel or gamma scale): its dark pixel
+  // at 15 degrees up (-8 dB) bounds the axis to 126, over the keep level (100), and does not
+  // carve there, where a linear sonar's does (above); at 7.4 degrees up (-1.6 dB: 29) it does.
+  auto carver = make(true, CarveParams::DarkPixels::Exact, kKeepLevel, 20.0);
+  darkViewFromBelow(*carver, 15.0);
+  EXPECT_EQ(carver->value(voxelOf(target_)), VoxelMap::kUnknown);
   EXPECT_EQ(carver->value(voxelOf(below_target_)), 0.0f);
 }
 

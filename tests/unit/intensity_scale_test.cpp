@@ -107,6 +107,21 @@ TEST(IntensityScale, GammaCountsAreTheLinearScaleRaisedToTheGamma) {
   EXPECT_THROW(IntensityScale::gamma(0.5, 0.0), Error);
 }
 
+TEST(IntensityScale, ADarkPixelHoldsUnderHalfACountsPower) {
+  // A noise-free image's count 0 says the echo read under half a count, on the sonar's scale.
+  EXPECT_DOUBLE_EQ(IntensityScale::linear().darkPower(), 0.5);
+  EXPECT_NEAR(IntensityScale::decibel(80.0, 255.0).darkPower(), std::pow(10.0, 40.0 / 2550.0),
+              1e-12);  // 0.16 dB: 1.037, not 0.5
+  EXPECT_NEAR(IntensityScale::gamma(0.5, 255.0).darkPower(), 255.0 / 510.0 / 510.0, 1e-12);
+  for (const IntensityScale& scale :
+       {IntensityScale::decibel(80.0, 255.0), IntensityScale::gamma(0.5, 255.0)}) {
+    cv::Mat half = (cv::Mat_<float>(1, 1) << 0.5f);
+    scale.countsToPower(half, "half a count");
+    EXPECT_NEAR(half.at<float>(0, 0), scale.darkPower(), 1e-6 * scale.darkPower())
+        << scale.describe();
+  }
+}
+
 TEST(IntensityScale, NonPositiveOrInfiniteScalesAreRefused) {
   EXPECT_THROW(IntensityScale::decibel(301.0, 255.0), Error);  // 10^30.1: too near a float's limit
   EXPECT_NO_THROW(IntensityScale::decibel(300.0, 255.0));
