@@ -19,10 +19,11 @@ constexpr double kKeptPerFrame = 0.01;
 
 std::string describeKeepLevel(const KeepLevel& level, double dynamic_range_db) {
   std::ostringstream line;
-  line << "beam-aware carving: voxels kept above " << level.level << " counts on the beam's axis (";
+  line << "beam-aware carving: voxels kept above " << level.level << " " << level.unit
+       << " on the beam's axis (";
   if (level.raised_to_a_count) {
     line << "raised to what a dark pixel bounds at the aperture's edge: the bright returns, "
-         << level.bright_returns << " counts, are too faint for " << dynamic_range_db
+         << level.bright_returns << " " << level.unit << ", are too faint for " << dynamic_range_db
          << " dB in whole counts)";
   } else {
     line << dynamic_range_db << " dB below the bright returns, " << level.bright_returns << ")";

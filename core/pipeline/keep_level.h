@@ -17,12 +17,15 @@
 namespace sonarcarve {
 
 struct KeepLevel {
-  double bright_returns = 0.0;  ///< the 99.99th percentile of lit pixels (counts)
+  double bright_returns = 0.0;  ///< the 99.99th percentile of lit pixels (in `unit`)
   double level = 0.0;           ///< bright_returns lowered by the dynamic range
   std::size_t frames = 0;       ///< frames it was measured on
   /// The level was raised to what a dark pixel of whole counts bounds at the aperture's edge
   /// (effectiveKeepLevel): the bright returns are too faint for the dynamic range.
   bool raised_to_a_count = false;
+  /// What the levels are in, for words: a linear sonar's counts, else the power its counts
+  /// are read as (sonar/intensity_scale.h).
+  std::string unit = "counts";
 };
 
 /// One line for the terminal and the workbench's log: the level, and why.

@@ -151,6 +151,7 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
       return result;
     }
     stage.carve.keep_level = result.keep_level.level;
+    result.keep_level.unit = sonar_.intensityScale().isLinear() ? "counts" : "power";
     stage.carve.dark_pixels = darkPixelsAreExact(noise.detector)
                                   ? CarveParams::DarkPixels::Exact
                                   : CarveParams::DarkPixels::BelowDetection;

@@ -128,6 +128,14 @@ TEST(CliSimulate, DecibelFramesHoldTheirLinearTwinsPowerWithinHalfAByte) {
   const auto info = runCli("info " + quoted(dir.path() / "decibel"));
   EXPECT_NE(info.output.find("intensity  decibel (255 counts = 80 dB)"), std::string::npos)
       << info.output;
+  // A run's keep level is power read from the bytes, and says so; a linear sonar's, counts.
+  for (const std::string scale : {"linear", "decibel"}) {
+    const auto run = runCli("reconstruct " + quoted(dir.path() / scale) + " --out " +
+                            quoted(dir.path() / (scale + "_run")));
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const std::string unit = scale == "linear" ? "counts" : "power";
+    EXPECT_NE(run.output.find(" " + unit + " on the beam's axis"), std::string::npos) << run.output;
+  }
 }
 
 // `--horizontal-beam-width` beams (1 degree over 0.2 degree spacing) blur the riser across
