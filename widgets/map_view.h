@@ -144,7 +144,7 @@ class MapView : public QWidget {
   void setColourBy(ColourBy by);
   ColourBy colourBy() const { return colour_by_; }
   /// What the map's intensities are in, for the legend: "counts" (the default), or the echo's
-  /// power for a sonar whose counts are decibels (sonar/intensity_scale.h).
+  /// power for a sonar whose counts are not (decibels, a gamma: sonar/intensity_scale.h).
   void setIntensityUnit(const QString& unit);
   void setTrack(const std::vector<Eigen::Vector3d>& positions_m);
   /// The current frame: its frustum and its polar image drawn as a fan at elevation 0.

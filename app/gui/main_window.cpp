@@ -602,7 +602,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   track_view_->setTrack(std::move(nav));
   map_view_->clearMap();
   map_view_->setTrack(sonar_track);
-  // The map holds what carving kept: power, which a decibel sonar's counts are not.
+  // The map holds what carving kept: power, which a decibel or gamma sonar's counts are not.
   map_view_->setIntensityUnit(mission_->sonar.intensityScale().isLinear() ? tr("counts")
                                                                           : tr("power"));
   timeline_->setFrameTimes(times);
@@ -696,7 +696,7 @@ void MainWindow::showFrame(int index) {
         ShownFrame shown;
         shown.index = index;
         Frame frame = loadFrame(*mission, static_cast<std::size_t>(index));
-        // Shown in the sonar's own counts (a decibel sonar's power would show only its
+        // Shown in the sonar's own counts (a decibel or gamma sonar's power would show only its
         // brightest returns), with the same window for the denoised view.
         const IntensityScale& scale = mission->sonar.intensityScale();
         shown.raw = scale.powerToCounts(frame.image);

@@ -173,6 +173,10 @@ NoiseModel NoiseModel::load(const std::filesystem::path& path) {
     };
     const double full_scale_db = number("intensity_full_scale_db");
     const double gamma = number("intensity_gamma");
+    if (full_scale_db != 0.0 && gamma != 0.0) {
+      throw Error(file, "intensity_gamma",
+                  "expected either intensity_full_scale_db (decibel) or intensity_gamma, not both");
+    }
     if (full_scale_db != 0.0 || gamma != 0.0) {
       if (fs["intensity_full_scale_count"].empty()) {
         throw Error(file, "intensity_full_scale_count",

@@ -90,12 +90,23 @@ OculusPing decodeBagPing(std::span<const std::uint8_t> cdr, const OculusField& f
   }
 }
 
+// Whether a ping's samples are on the sonar's intensity scale (one whose gamma cannot be
+// taken is not).
+bool sameScale(const OculusPing& ping, const SonarModel& sonar) {
+  try {
+    return oculusIntensityScale(ping) == sonar.intensityScale();
+  } catch (const Error&) {
+    return false;
+  }
+}
+
 bool sameGeometry(const OculusPing& ping, const SonarModel& sonar) {
   const std::vector<double>& centres = sonar.bearings().centres();
   return ping.n_ranges == sonar.rows() && ping.n_beams == sonar.cols() &&
          ping.range_resolution_m == sonar.range().resolution_m &&
          std::equal(ping.bearings_rad.begin(), ping.bearings_rad.end(), centres.begin(),
-                    centres.end());
+                    centres.end()) &&
+         sameScale(ping, sonar);
 }
 
 }  // namespace
@@ -182,7 +193,11 @@ BagOculusFrames indexOculusFrames(const RosBag& bag, std::size_t topic, BagTime 
       }
       const OculusPing ping = decodeBagPing(cdr, *field, false, source, place);
       if (!out.sonar) {
-        out.sonar = sonarModelFromPing(ping, aperture_deg);
+        try {
+          out.sonar = sonarModelFromPing(ping, aperture_deg);
+        } catch (const Error& e) {
+          throw Error(source, place, e.message());
+        }
         first = ping;
       } else if (!sameGeometry(ping, *out.sonar)) {
         ++other_geometry;
@@ -232,9 +247,11 @@ BagOculusFrames indexOculusFrames(const RosBag& bag, std::size_t topic, BagTime 
   }
   if (other_geometry > 0) {
     problems.push_back(source + ": topic " + t.name + ": " + std::to_string(other_geometry) +
-                       " pings of another range window or bearing table than the first (" +
+                       " pings of another range window, bearing table or samples' scale than "
+                       "the first (" +
                        std::to_string(first->n_beams) + " beams x " +
-                       std::to_string(first->n_ranges) + " ranges) left out");
+                       std::to_string(first->n_ranges) + " ranges, " +
+                       out.sonar->intensityScale().describe() + ") left out");
   }
   return out;
 }
@@ -249,7 +266,11 @@ cv::Mat bagOculusImage(std::span<const std::uint8_t> cdr, const SonarModel& sona
   if (!sameGeometry(ping, sonar)) {
     throw Error(source, place,
                 std::to_string(ping.n_beams) + " beams x " + std::to_string(ping.n_ranges) +
-                    " ranges: expected the first ping's geometry");
+                    " ranges, " + std::to_string(ping.sample_bytes * 8) +
+                    "-bit samples of "
+                    "gammaCorrection " +
+                    std::to_string(ping.gamma) +
+                    ": expected the first ping's geometry and samples' scale");
   }
   return ping.image;
 }

@@ -19,8 +19,12 @@ namespace {
 // The geometry and the sample scale a ping shares with the others of one mission.
 using GeometryKey = std::tuple<int, int, double, std::vector<double>, IntensityScale::Key>;
 GeometryKey geometryOf(const OculusPing& p) {
-  return {p.n_ranges, p.n_beams, p.range_resolution_m, p.bearings_rad,
-          oculusIntensityScale(p).key()};
+  IntensityScale::Key scale{-1.0, p.gamma, p.sample_bytes};  // a gamma that cannot be taken
+  try {
+    scale = oculusIntensityScale(p).key();
+  } catch (const Error&) {
+  }
+  return {p.n_ranges, p.n_beams, p.range_resolution_m, p.bearings_rad, scale};
 }
 
 std::string kilohertz(double hz) {
@@ -72,7 +76,15 @@ OculusImportPlan planOculusImport(const OculusLog& log, double time_offset_s,
     }
   }
   const OculusPing& first = pings[used.front()].ping;
-  OculusImportPlan plan{sonarModelFromPing(first, aperture_deg),
+  const auto sonarModel = [&] {
+    try {
+      return sonarModelFromPing(first, aperture_deg);
+    } catch (const Error& e) {
+      throw Error(log.source(), "ping " + std::to_string(used.front()),
+                  "gammaCorrection " + std::to_string(first.gamma) + ": " + e.message());
+    }
+  };
+  OculusImportPlan plan{sonarModel(),
                         {},
                         {},
                         pings.size() - used.size(),

@@ -32,7 +32,8 @@ double oculusVerticalApertureDeg(const OculusPing& ping);
 /// range 0, and the vertical aperture (`aperture_deg` or oculusVerticalApertureDeg).
 SonarModel sonarModelFromPing(const OculusPing& ping, std::optional<double> aperture_deg);
 /// How a ping's samples relate to the sonar's linear scale: its gammaCorrection (0 and 255:
-/// linear; 127: gamma 0.5) over the full scale of its sample size.
+/// linear; 127: gamma 0.498) over the full scale of its sample size. Throws Error for a gamma
+/// too small for its samples (IntensityScale::gamma).
 IntensityScale oculusIntensityScale(const OculusPing& ping);
 
 /// What a log gives before anything is written: shared by import and `info`.

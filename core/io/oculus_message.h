@@ -46,9 +46,9 @@ struct OculusPing {
   OculusMessageHeader header;
   // The fire message (the settings the ping was made with).
   std::uint8_t master_mode = 0;  ///< 1 = low frequency (wide), 2 = high frequency (narrow)
-  std::uint8_t gamma = 0;        ///< the samples' gamma in 255ths; 0 and 255: 1 (linear), 127: 0.5
-  std::uint8_t flags = 0;        ///< bit 0 range in metres, bit 1 16-bit, bit 2 gain sent
-  double range_demand = 0.0;     ///< metres or percent, as flags bit 0 says
+  std::uint8_t gamma = 0;     ///< the samples' gamma in 255ths; 0 and 255: 1 (linear), 127: 0.498
+  std::uint8_t flags = 0;     ///< bit 0 range in metres, bit 1 16-bit, bit 2 gain sent
+  double range_demand = 0.0;  ///< metres or percent, as flags bit 0 says
   double gain_percent = 0.0;
   double speed_of_sound_demand_mps = 0.0;  ///< 0: the sonar computes it from salinity
   double salinity_ppt = 0.0;

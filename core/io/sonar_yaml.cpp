@@ -55,12 +55,13 @@ IntensityScale intensityFromYaml(const YAML::Node& node, const YamlFields& field
   }
   if (name == "gamma") {
     const YAML::Node gamma = fields.child(node, path, "gamma");
+    const double exponent = fields.positive(gamma, path + ".gamma");
+    const double full_scale =
+        fields.positive(fields.child(node, path, "full_scale_count"), path + ".full_scale_count");
     try {
-      return IntensityScale::gamma(fields.positive(gamma, path + ".gamma"),
-                                   fields.positive(fields.child(node, path, "full_scale_count"),
-                                                   path + ".full_scale_count"));
+      return IntensityScale::gamma(exponent, full_scale);
     } catch (const Error& e) {
-      fields.fail(gamma, path + ".gamma", e.message());
+      fields.fail(gamma, path + "." + e.place(), e.message());
     }
   }
   if (name != "decibel") {

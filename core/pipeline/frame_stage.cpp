@@ -109,6 +109,11 @@ BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
     }
     progress.report("beam width", k + 1, count);
   }
+  if (indices.empty()) {
+    return {sonar,
+            "the mission gives no horizontal beam width, and no frame is placed in the "
+            "navigation to read one from"};
+  }
   if (read == 0) {
     return {sonar,
             "the mission gives no horizontal beam width, and no frame could be read for "

@@ -128,10 +128,9 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
     // Each frame is noised, encoded and written while the next one renders; two wait at most.
     // (Declared after what its jobs use: on the way out it stops before they go.)
     SerialWorker frame_writer(2);
-    // The sonar saturates at its full scale: 65535 counts of power, or a decibel scale's top.
+    // The sonar saturates at its full scale: 65535 counts of power, or its scale's top.
     const IntensityScale& scale = mission_sonar.intensityScale();
-    const auto saturation =
-        static_cast<float>(scale.isLinear() ? 65535.0 : std::pow(10.0, scale.fullScaleDb() / 10.0));
+    const auto saturation = static_cast<float>(scale.isLinear() ? 65535.0 : scale.fullScalePower());
     for (std::size_t i = 0; i < frames; ++i) {
       if (progress.cancelled()) {
         result.cancelled = true;

@@ -1,12 +1,29 @@
 #include "sonar/intensity_scale.h"
 
 #include <cmath>
+#include <limits>
 
 #include "common/error.h"
 #include "common/number_text.h"
 
 namespace sonarcarve {
 namespace {
+
+// F (x / F)^exponent of every pixel of a CV_32F image, negative ones taken as 0.
+cv::Mat powerLaw(const cv::Mat& image, double full_scale, double exponent) {
+  cv::Mat out;
+  cv::max(image, 0.0f, out);
+  out.convertTo(out, CV_32F, 1.0 / full_scale);
+  cv::pow(out, exponent, out);
+  out.convertTo(out, CV_32F, full_scale);
+  return out;
+}
+
+double powerLaw(double value, double full_scale, double exponent) {
+  return full_scale * std::pow(value / full_scale, exponent);
+}
+
+constexpr double kHalfCount = 0.5;
 
 void requireFloatImage(const cv::Mat& image) {
   if (image.type() != CV_32F) {
@@ -47,6 +64,15 @@ IntensityScale IntensityScale::gamma(double gamma, double full_scale_count) {
     throw Error("intensity scale", "full_scale_count",
                 "expected a positive count, got " + shortestNumber(full_scale_count));
   }
+  const double smallest = std::log(kHalfCount / full_scale_count) /
+                          std::log(std::numeric_limits<float>::min() / full_scale_count);
+  if (!(gamma >= smallest)) {
+    throw Error("intensity scale", "gamma",
+                "expected a gamma of at least " + shortestNumber(std::ceil(smallest * 1e3) / 1e3) +
+                    " for " + shortestNumber(full_scale_count) +
+                    " counts full scale (half a count must stay a float's power), got " +
+                    shortestNumber(gamma));
+  }
   IntensityScale scale;
   if (gamma != 1.0) {
     scale.gamma_ = gamma;
@@ -56,14 +82,20 @@ IntensityScale IntensityScale::gamma(double gamma, double full_scale_count) {
 }
 
 double IntensityScale::darkPower() const {
-  constexpr double kHalf = 0.5;
   if (isLinear()) {
-    return kHalf;
+    return kHalfCount;
   }
   if (isDecibel()) {
-    return std::pow(10.0, kHalf * full_scale_db_ / full_scale_count_ / 10.0);
+    return std::pow(10.0, kHalfCount * full_scale_db_ / full_scale_count_ / 10.0);
   }
-  return full_scale_count_ * std::pow(kHalf / full_scale_count_, 1.0 / gamma_);
+  return powerLaw(kHalfCount, full_scale_count_, 1.0 / gamma_);
+}
+
+double IntensityScale::fullScalePower() const {
+  if (isLinear()) {
+    return 0.0;
+  }
+  return isDecibel() ? std::pow(10.0, full_scale_db_ / 10.0) : full_scale_count_;
 }
 
 std::string IntensityScale::describe() const {
@@ -96,10 +128,7 @@ void IntensityScale::countsToPower(cv::Mat& image, const std::string& what,
   }
   if (!isDecibel()) {
     // power = F (count / F)^(1 / gamma); negative counts (none a sonar sends) are no echo.
-    cv::max(image, 0.0f, image);
-    image.convertTo(image, CV_32F, 1.0 / full_scale_count_);
-    cv::pow(image, 1.0 / gamma_, image);
-    image.convertTo(image, CV_32F, full_scale_count_);
+    image = powerLaw(image, full_scale_count_, 1.0 / gamma_);
     return;
   }
   // power = exp(count * ln(10) * dB_per_count / 10); count 0, the bottom of the scale, is no
@@ -118,11 +147,7 @@ cv::Mat IntensityScale::powerToCounts(const cv::Mat& image) const {
   }
   cv::Mat counts;
   if (!isDecibel()) {
-    cv::max(image, 0.0f, counts);
-    counts.convertTo(counts, CV_32F, 1.0 / full_scale_count_);
-    cv::pow(counts, gamma_, counts);
-    counts.convertTo(counts, CV_32F, full_scale_count_);
-    return counts;
+    return powerLaw(image, full_scale_count_, gamma_);
   }
   cv::max(image, 1.0f, counts);  // powers up to count 1's, and no echo, are count 0
   cv::log(counts, counts);

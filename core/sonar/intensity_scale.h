@@ -32,8 +32,9 @@ class IntensityScale {
   /// Counts 0..full_scale_count span 0..full_scale_db decibels. Throws Error unless both are
   /// positive and the full scale's power fits a float (at most kMostDecibels).
   static IntensityScale decibel(double full_scale_db, double full_scale_count);
-  /// Counts 0..full_scale_count are the linear scale raised to `gamma` (0 < gamma <= 10;
-  /// gamma 1 is linear). Throws Error unless both are in range.
+  /// Counts 0..full_scale_count are the linear scale raised to `gamma` (gamma 1 is linear).
+  /// Throws Error unless the full scale is positive and gamma at most kLargestGamma and large
+  /// enough that half a count is a float over its smallest normal (0.12 for 65,535 counts).
   static IntensityScale gamma(double gamma, double full_scale_count);
 
   bool isLinear() const { return full_scale_db_ == 0.0 && gamma_ == 0.0; }
@@ -44,6 +45,9 @@ class IntensityScale {
   /// The power under which a pixel reads count 0 (half a count's): what a dark pixel of an
   /// image without noise may hold.
   double darkPower() const;
+  /// The power of the full scale's count: 10^(full_scale_db / 10) (decibel), full_scale_count
+  /// (gamma); a linear scale has none (0).
+  double fullScalePower() const;
   /// In words, for reports: "linear", "decibel (255 counts = 80 dB)" or "gamma 0.5 (255
   /// counts full scale)".
   std::string describe() const;

@@ -211,23 +211,30 @@ TEST(RosBagOculus, ACutPingIsSkippedAndNamedByBagTopicAndMessage) {
   }
 }
 
-TEST(RosBagOculus, PingsOfAnotherGeometryAreLeftOutAndCounted) {
+TEST(RosBagOculus, PingsOfAnotherGeometryOrScaleAreLeftOutAndCounted) {
   const test::ScratchDir dir;
   test::OculusPingSpec small;
+  small.gamma = 127;
   std::vector<BagMessageSpec> messages;
-  messages.push_back(
-      {0, 1'000'000'000, rawDataMessage(1'000'000'000, 1, test::encodeOculusPing(small))});
-  small.n_beams = 32;
-  messages.push_back(
-      {0, 2'000'000'000, rawDataMessage(2'000'000'000, 1, test::encodeOculusPing(small))});
+  const auto add = [&](std::int64_t seconds) {
+    const std::int64_t ns = seconds * 1'000'000'000;
+    messages.push_back({0, ns, rawDataMessage(ns, 1, test::encodeOculusPing(small))});
+  };
+  add(1);
+  small.n_beams = 32;  // another geometry
+  add(2);
+  small.n_beams = 16;
+  small.gamma = 0;  // another scale: linear samples
+  add(3);
   const auto path = dir.path() / "mixed.mcap";
   writeBagMessages(path, BagFormat::Mcap,
                    {{"/oculus/raw_data", "apl_msgs/msg/RawData", kRawDataDefinition}}, messages);
   const Mission read = openMission(path);
   EXPECT_EQ(read.frames.size(), 1U);
   EXPECT_EQ(read.sonar.cols(), 16);
-  EXPECT_TRUE(
-      anyContains(read.warnings, {"mixed.mcap", "topic /oculus/raw_data", "1 pings of another"}));
+  EXPECT_EQ(read.sonar.intensityScale(), IntensityScale::gamma(0.498, 255.0));
+  EXPECT_TRUE(anyContains(read.warnings, {"mixed.mcap", "topic /oculus/raw_data",
+                                          "2 pings of another", "gamma 0.498"}));
 }
 
 TEST(RosBagOculus, FindsTheOculusFieldOnlyWhereACountIntroducesTheMagic) {

@@ -184,6 +184,16 @@ TEST(NoiseModel, AModelOfAnotherGeometryIsRefusedWithAClearMessage) {
   EXPECT_THROW(Detector(params, nullptr, sonar), Error);  // no model at all
 }
 
+// Loading `file` fails with an error that says `fragment`.
+void expectLoadError(const std::filesystem::path& file, const std::string& fragment) {
+  try {
+    NoiseModel::load(file);
+    ADD_FAILURE() << "accepted " << file;
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
 // The model learned from three empty-water frames of `sonar` (power 200 +- 20, stored in its
 // counts), and that model saved in `dir` and loaded back.
 std::pair<NoiseModel, NoiseModel> learnedAndReloaded(const SonarModel& sonar,
@@ -223,14 +233,7 @@ TEST(NoiseModel, KeepsItsIntensityScaleAndRefusesAnother) {
     ASSERT_NE(at, std::string::npos);
     text.erase(at, text.find('\n', at) - at);
     test::writeText(dir.path() / "broken.yaml", text);
-    try {
-      NoiseModel::load(dir.path() / "broken.yaml");
-      ADD_FAILURE() << "accepted";
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("broken.yaml: intensity_full_scale_count: missing"),
-                std::string::npos)
-          << e.what();
-    }
+    expectLoadError(dir.path() / "broken.yaml", "broken.yaml: intensity_full_scale_count: missing");
   }
 }
 
@@ -246,6 +249,14 @@ TEST(NoiseModel, BrokenFilesGetClearErrors) {
   const std::string text = test::readText(dir.path() / "good.yaml");
   test::writeText(dir.path() / "cut.yaml", text.substr(0, text.size() / 2));
   EXPECT_THROW(NoiseModel::load(dir.path() / "cut.yaml"), Error);
+  // A scale both decibel and gamma is refused, not read as either.
+  std::string both = text;
+  const std::string key = "intensity_full_scale_db: 0.";
+  const auto at = both.find(key);
+  ASSERT_NE(at, std::string::npos) << text.substr(0, 800);
+  both.replace(at, key.size(), "intensity_gamma: 0.5\nintensity_full_scale_db: 80.");
+  test::writeText(dir.path() / "both.yaml", both);
+  expectLoadError(dir.path() / "both.yaml", "both.yaml: intensity_gamma: expected either");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "common/error.h"
 #include "sonar/intensity_scale.h"
@@ -105,6 +106,14 @@ TEST(IntensityScale, GammaCountsAreTheLinearScaleRaisedToTheGamma) {
   EXPECT_THROW(IntensityScale::gamma(10.5, 255.0), Error);
   EXPECT_THROW(IntensityScale::gamma(NAN, 255.0), Error);
   EXPECT_THROW(IntensityScale::gamma(0.5, 0.0), Error);
+  // Half a count of 16 bits at gamma 0.1 would be 65535 (0.5 / 65535)^10, 1e-47: under a
+  // float's smallest normal, so dark pixels would hold nothing at all.
+  EXPECT_THROW(IntensityScale::gamma(0.1, 65535.0), Error);
+  EXPECT_GT(IntensityScale::gamma(0.125, 65535.0).darkPower(), std::numeric_limits<float>::min());
+  EXPECT_NO_THROW(IntensityScale::gamma(0.1, 255.0));  // 8 bits: 255 (0.5 / 255)^10, 4e-25
+  EXPECT_DOUBLE_EQ(oculus.fullScalePower(), 255.0);
+  EXPECT_DOUBLE_EQ(IntensityScale::decibel(80.0, 255.0).fullScalePower(), 1e8);
+  EXPECT_EQ(IntensityScale::linear().fullScalePower(), 0.0);
 }
 
 TEST(IntensityScale, ADarkPixelHoldsUnderHalfACountsPower) {

@@ -84,7 +84,7 @@ TEST_F(MissionErrors, InvalidIntensityScale) {
       {"{scale: decibels, full_scale_db: 80, full_scale_count: 255}",
        "sonar.intensity.scale: expected 'linear', 'decibel' or 'gamma'"},
       {"{scale: gamma, gamma: 12, full_scale_count: 255}",
-       "sonar.intensity.gamma: expected a gamma over 0 and at most 10"},
+       "sonar.intensity.gamma: expected a gamma over 0 and at most 10, got 12"},
       {"{scale: gamma, gamma: 0.5}", "sonar.intensity.full_scale_count: missing"},
       {"{scale: decibel, full_scale_db: 0, full_scale_count: 255}",
        "sonar.intensity.full_scale_db: expected a positive number"},
@@ -95,6 +95,16 @@ TEST_F(MissionErrors, InvalidIntensityScale) {
     edit("mission.yaml",
          "vertical_aperture_deg:", "intensity: " + intensity + "\n  vertical_aperture_deg:");
     expectReadError({"mission.yaml", message});
+  }
+  // An error in a field of the scale is reported at that field alone.
+  writeText(mission_ / "mission.yaml", original);
+  edit("mission.yaml",
+       "vertical_aperture_deg:", "intensity: {scale: gamma, gamma: 0.5}\n  vertical_aperture_deg:");
+  try {
+    readMission(mission_);
+    ADD_FAILURE() << "mission read without error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).find("gamma: sonar"), std::string::npos) << e.what();
   }
 }
 
