@@ -90,23 +90,8 @@ OculusPing decodeBagPing(std::span<const std::uint8_t> cdr, const OculusField& f
   }
 }
 
-// Whether a ping's samples are on the sonar's intensity scale (one whose gamma cannot be
-// taken is not).
-bool sameScale(const OculusPing& ping, const SonarModel& sonar) {
-  try {
-    return oculusIntensityScale(ping) == sonar.intensityScale();
-  } catch (const Error&) {
-    return false;
-  }
-}
-
 bool sameGeometry(const OculusPing& ping, const SonarModel& sonar) {
-  const std::vector<double>& centres = sonar.bearings().centres();
-  return ping.n_ranges == sonar.rows() && ping.n_beams == sonar.cols() &&
-         ping.range_resolution_m == sonar.range().resolution_m &&
-         std::equal(ping.bearings_rad.begin(), ping.bearings_rad.end(), centres.begin(),
-                    centres.end()) &&
-         sameScale(ping, sonar);
+  return oculusPingFormat(ping) == oculusPingFormat(sonar);
 }
 
 }  // namespace
@@ -267,9 +252,7 @@ cv::Mat bagOculusImage(std::span<const std::uint8_t> cdr, const SonarModel& sona
     throw Error(source, place,
                 std::to_string(ping.n_beams) + " beams x " + std::to_string(ping.n_ranges) +
                     " ranges, " + std::to_string(ping.sample_bytes * 8) +
-                    "-bit samples of "
-                    "gammaCorrection " +
-                    std::to_string(ping.gamma) +
+                    "-bit samples of gammaCorrection " + std::to_string(ping.gamma) +
                     ": expected the first ping's geometry and samples' scale");
   }
   return ping.image;

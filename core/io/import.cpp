@@ -16,17 +16,6 @@
 namespace sonarcarve {
 namespace {
 
-// The geometry and the sample scale a ping shares with the others of one mission.
-using GeometryKey = std::tuple<int, int, double, std::vector<double>, IntensityScale::Key>;
-GeometryKey geometryOf(const OculusPing& p) {
-  IntensityScale::Key scale{-1.0, p.gamma, p.sample_bytes};  // a gamma that cannot be taken
-  try {
-    scale = oculusIntensityScale(p).key();
-  } catch (const Error&) {
-  }
-  return {p.n_ranges, p.n_beams, p.range_resolution_m, p.bearings_rad, scale};
-}
-
 std::string kilohertz(double hz) {
   return std::isfinite(hz) && hz > 0.0 && hz < 1e9
              ? std::to_string(static_cast<long>(std::lround(hz / 1000.0))) + "khz"
@@ -46,6 +35,20 @@ IntensityScale oculusIntensityScale(const OculusPing& ping) {
              : IntensityScale::gamma(std::round(ping.gamma / 255.0 * 1000.0) / 1000.0, full_scale);
 }
 
+OculusPingFormat oculusPingFormat(const OculusPing& ping) {
+  IntensityScale::Key scale{-1.0, ping.gamma, ping.sample_bytes};  // a gamma that cannot be taken
+  try {
+    scale = oculusIntensityScale(ping).key();
+  } catch (const Error&) {
+  }
+  return {ping.n_ranges, ping.n_beams, ping.range_resolution_m, ping.bearings_rad, scale};
+}
+
+OculusPingFormat oculusPingFormat(const SonarModel& sonar) {
+  return {sonar.rows(), sonar.cols(), sonar.range().resolution_m, sonar.bearings().centres(),
+          sonar.intensityScale().key()};
+}
+
 SonarModel sonarModelFromPing(const OculusPing& ping, std::optional<double> aperture_deg) {
   return SonarModel("oculus-" + kilohertz(ping.frequency_hz),
                     RangeBins{0.0, ping.range_resolution_m, ping.n_ranges},
@@ -58,20 +61,20 @@ OculusImportPlan planOculusImport(const OculusLog& log, double time_offset_s,
                                   std::optional<double> aperture_deg) {
   const auto& pings = log.pings();
   // The most common geometry (the first one on a tie).
-  std::map<GeometryKey, std::size_t> counts;
+  std::map<OculusPingFormat, std::size_t> counts;
   for (const auto& entry : pings) {
-    ++counts[geometryOf(entry.ping)];
+    ++counts[oculusPingFormat(entry.ping)];
   }
   std::size_t best = 0;
   for (std::size_t i = 0; i < pings.size(); ++i) {
-    if (counts[geometryOf(pings[i].ping)] > counts[geometryOf(pings[best].ping)]) {
+    if (counts[oculusPingFormat(pings[i].ping)] > counts[oculusPingFormat(pings[best].ping)]) {
       best = i;
     }
   }
-  const GeometryKey key = geometryOf(pings[best].ping);
+  const OculusPingFormat key = oculusPingFormat(pings[best].ping);
   std::vector<std::size_t> used;
   for (std::size_t i = 0; i < pings.size(); ++i) {
-    if (geometryOf(pings[i].ping) == key) {
+    if (oculusPingFormat(pings[i].ping) == key) {
       used.push_back(i);
     }
   }

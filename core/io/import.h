@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "common/progress.h"
@@ -35,6 +36,11 @@ SonarModel sonarModelFromPing(const OculusPing& ping, std::optional<double> aper
 /// linear; 127: gamma 0.498) over the full scale of its sample size. Throws Error for a gamma
 /// too small for its samples (IntensityScale::gamma).
 IntensityScale oculusIntensityScale(const OculusPing& ping);
+/// What the pings of one mission share: range bins, beams, bearing table and samples' scale
+/// (a gamma too small to take is a scale of its own, which no sonar model has).
+using OculusPingFormat = std::tuple<int, int, double, std::vector<double>, IntensityScale::Key>;
+OculusPingFormat oculusPingFormat(const OculusPing& ping);
+OculusPingFormat oculusPingFormat(const SonarModel& sonar);
 
 /// What a log gives before anything is written: shared by import and `info`.
 struct OculusImportPlan {

@@ -25,6 +25,13 @@ double powerLaw(double value, double full_scale, double exponent) {
 
 constexpr double kHalfCount = 0.5;
 
+void requirePositiveCount(double full_scale_count) {
+  if (!(full_scale_count > 0.0) || !std::isfinite(full_scale_count)) {
+    throw Error("intensity scale", "full_scale_count",
+                "expected a positive count, got " + shortestNumber(full_scale_count));
+  }
+}
+
 void requireFloatImage(const cv::Mat& image) {
   if (image.type() != CV_32F) {
     throw Error("intensity scale", "image",
@@ -44,10 +51,7 @@ IntensityScale IntensityScale::decibel(double full_scale_db, double full_scale_c
                 "expected at most " + shortestNumber(kMostDecibels) +
                     " dB (the power must fit a float), got " + shortestNumber(full_scale_db));
   }
-  if (!(full_scale_count > 0.0) || !std::isfinite(full_scale_count)) {
-    throw Error("intensity scale", "full_scale_count",
-                "expected a positive count, got " + shortestNumber(full_scale_count));
-  }
+  requirePositiveCount(full_scale_count);
   IntensityScale scale;
   scale.full_scale_db_ = full_scale_db;
   scale.full_scale_count_ = full_scale_count;
@@ -60,10 +64,7 @@ IntensityScale IntensityScale::gamma(double gamma, double full_scale_count) {
                 "expected a gamma over 0 and at most " + shortestNumber(kLargestGamma) + ", got " +
                     shortestNumber(gamma));
   }
-  if (!(full_scale_count > 0.0) || !std::isfinite(full_scale_count)) {
-    throw Error("intensity scale", "full_scale_count",
-                "expected a positive count, got " + shortestNumber(full_scale_count));
-  }
+  requirePositiveCount(full_scale_count);
   const double smallest = std::log(kHalfCount / full_scale_count) /
                           std::log(std::numeric_limits<float>::min() / full_scale_count);
   if (!(gamma >= smallest)) {
