@@ -554,6 +554,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   const bool another = mission_ && mission_->folder != mission->folder;
   mission_ = mission;
   read_beam_width_rad_ = 0.0;  // read again for this mission (readBeamWidth)
+  beam_width_frames_.reset();
   view_settled_ = false;
   last_pick_.reset();
   map_view_->clearPicks();
@@ -621,14 +622,25 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
 }
 
 void MainWindow::readBeamWidth() {
-  beam_width_job_.discard();  // the width was reset with the mission (openMissionWith)
-  if (mission_->sonar.horizontalBeamWidth() > 0.0) {
+  const ReconstructionParams p = params_panel_->params();
+  if (carvingSonar(*mission_, p).horizontalBeamWidth() > 0.0) {
+    // Given by the mission or the analyst: nothing to read, and a reading under way is moot.
+    beam_width_job_.discard();
+    beam_width_frames_.reset();
+    read_beam_width_rad_ = 0.0;
     return;
   }
-  // The frames a run with these parameters reads.
+  // The frames a run with these parameters reads; read again only when they change.
+  std::vector<std::size_t> frames = placedFrames(*mission_, p);
+  if (beam_width_frames_ && *beam_width_frames_ == frames) {
+    return;
+  }
+  beam_width_job_.discard();
+  read_beam_width_rad_ = 0.0;
+  beam_width_frames_ = frames;
+  log(tr("reading the beams' width from %1 frames (the mission gives none)").arg(frames.size()));
   beam_width_job_.start(
-      [mission = mission_,
-       frames = placedFrames(*mission_, params_panel_->params())](JobContext& context) {
+      [mission = mission_, frames = std::move(frames)](JobContext& context) {
         return chooseBeamWidth(*mission, mission->sonar, frames, context)
             .sonar.horizontalBeamWidth();
       },
@@ -732,6 +744,9 @@ void MainWindow::drawFrame(const ShownFrame& shown) {
 
 void MainWindow::setParams(const ReconstructionParams& params) {
   params_panel_->setParams(params);
+  if (mission_) {
+    readBeamWidth();
+  }
   updateDetector();
 }
 
@@ -757,6 +772,9 @@ void MainWindow::setColourBy(widgets::MapView::ColourBy by) {
 }
 
 void MainWindow::paramsEdited() {
+  if (mission_) {
+    readBeamWidth();
+  }
   updateDetector();
   showFrame(timeline_->currentFrame());
   if (mission_) {

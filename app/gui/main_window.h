@@ -206,6 +206,7 @@ class MainWindow : public QMainWindow {
   // denoised view, as a run reads it (0 until read, or when none can be).
   BackgroundJob beam_width_job_;
   double read_beam_width_rad_ = 0.0;
+  std::optional<std::vector<std::size_t>> beam_width_frames_;  // what it is read from, if read
   BackgroundJob frame_job_;
   BackgroundJob import_job_;
   BackgroundJob learn_job_;

@@ -14,6 +14,7 @@
 #include <set>
 
 #include "accuracy_panel.h"
+#include "common/angles.h"
 #include "eval/evaluator.h"
 #include "frame_timeline.h"
 #include "geometry/scene_io.h"
@@ -465,6 +466,36 @@ class WorkbenchTest : public QObject {
     QVERIFY(window.openMission(QString::fromStdString(mission().string())));
     QCOMPARE(window.paramsPanel().params().carve.voxel_size_m, 0.035);
     QVERIFY(window.logText().contains("parameters: this mission's own"));
+    QVERIFY(waitForResult(window, 120000));
+  }
+
+  // A mission that does not give its beams' width: the workbench reads it for the denoised
+  // view from the frames a run reads, again only when those change, and never when the analyst
+  // gives the width.
+  void beamWidthIsReadOnlyWhenNobodyGivesIt() {
+    const QString reading = "reading the beams' width";
+    MainWindow window;
+    window.show();
+    sonarcarve::ReconstructionParams given;
+    given.horizontal_beam_width_rad = sonarcarve::degToRad(0.4);
+    window.setParams(given);
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QVERIFY(waitForResult(window, 120000));
+    QVERIFY2(!window.logText().contains(reading), qPrintable(window.logText()));
+
+    window.setParams(sonarcarve::ReconstructionParams{});  // the analyst clears the width
+    QCOMPARE(window.logText().count(reading), 1);
+    QVERIFY(window.logText().contains(reading + " from 24 frames"));
+    QSignalSpy edited(&window.paramsPanel(), &sonarcarve::widgets::ParamsPanel::paramsEdited);
+    window.paramsPanel().voxelSize()->setValue(4.0);  // the same frames: nothing to read again
+    QVERIFY(edited.wait(5000));
+    QCOMPARE(window.logText().count(reading), 1);
+    sonarcarve::ReconstructionParams every_other;
+    every_other.stride = 2;
+    window.setParams(every_other);
+    QVERIFY(window.logText().contains(reading + " from 12 frames"));
+    window.setParams(given);
+    QCOMPARE(window.logText().count(reading), 2);
     QVERIFY(waitForResult(window, 120000));
   }
 
