@@ -36,6 +36,35 @@ std::vector<PosedFrame> placeFrames(const Mission& mission, const FrameSelection
   return posed;
 }
 
+namespace {
+
+/// Frames the check of a detector `none` reads: enough for `auto`'s background test, whose
+/// pixels are medians over frames.
+constexpr std::size_t kSpeckleCheckFrames = 8;
+
+/// What an analyst who turned the detector off should know: said when the frames carry a
+/// background (speckle), which carving without a detector keeps as structure; empty otherwise.
+std::string speckleLeftIn(const Mission& mission, const std::vector<std::size_t>& indices,
+                          int smoothing, Progress& progress) {
+  MissionNoiseStats stats;
+  try {
+    learnNoiseFromMission(mission, indices, smoothing, progress, &stats, kSpeckleCheckFrames);
+  } catch (const Error&) {
+    return "";  // too few frames to tell
+  }
+  if (!stats.has_background()) {
+    return "";
+  }
+  char median[32];
+  std::snprintf(median, sizeof median, "%.3g", stats.background_median);
+  return "; warning: the frames carry background noise (speckle: over " +
+         std::to_string(stats.frames_used) + " frames the median pixel's mean is " + median +
+         "), which carving without a detector keeps as structure; the detector auto learns a "
+         "noise model from the frames";
+}
+
+}  // namespace
+
 NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFrame>& frames,
                              const DetectorParams& detector, const std::string& given_path,
                              std::shared_ptr<const NoiseModel> given, Progress& progress) {
@@ -47,13 +76,16 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
     return choice;
   }
   choice.detector = detector.resolved(false);
-  if (detector.mode != DetectorMode::Auto) {
-    choice.reason = detector.mode == DetectorMode::None
-                        ? "no denoising (detector none)"
-                        : "detector " + std::string(toString(detector.mode)) + ", no noise model";
+  const std::vector<std::size_t> indices = indicesOf(frames);
+  if (detector.mode == DetectorMode::None) {
+    choice.reason = "no denoising (detector none)" +
+                    speckleLeftIn(mission, indices, detector.smoothing, progress);
     return choice;
   }
-  const std::vector<std::size_t> indices = indicesOf(frames);
+  if (detector.mode != DetectorMode::Auto) {
+    choice.reason = "detector " + std::string(toString(detector.mode)) + ", no noise model";
+    return choice;
+  }
   MissionNoiseStats stats;
   std::optional<NoiseModel> learned;
   try {

@@ -46,7 +46,8 @@ struct NoiseChoice {
 /// without one, a model learned from the placed frames themselves
 /// (denoise/mission_noise_model.h), or no denoising when the frames carry no background at
 /// all (noise-free simulations). `given` is the model read from the file `given_path`, or
-/// null when none was given.
+/// null when none was given. With the detector `none` the reason warns when a few frames show
+/// a background (speckle), which the run then carves as structure.
 NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFrame>& frames,
                              const DetectorParams& detector, const std::string& given_path,
                              std::shared_ptr<const NoiseModel> given, Progress& progress);

@@ -106,6 +106,23 @@ TEST_F(MissionNoise, AutoLearnsFromTheMissionAndNeverChoosesNoneOnSpeckle) {
       << choice.reason;
 }
 
+// An analyst may turn the detector off: the run does as asked, and says that the frames carry
+// speckle, which it will carve as structure.
+TEST_F(MissionNoise, DetectorNoneOnSpeckleWarns) {
+  SilentProgress progress;
+  std::vector<PosedFrame> frames;
+  for (std::size_t i : all())
+    frames.push_back({i, Eigen::Isometry3d::Identity()});
+  DetectorParams none;
+  none.mode = DetectorMode::None;
+  const NoiseChoice choice =
+      chooseNoiseModel(mission("riser"), frames, none, "", nullptr, progress);
+  EXPECT_EQ(choice.detector.mode, DetectorMode::None);
+  EXPECT_FALSE(choice.model);
+  EXPECT_NE(choice.reason.find("warning: the frames carry background noise"), std::string::npos)
+      << choice.reason;
+}
+
 TEST_F(MissionNoise, TooFewFramesGiveNoDenoisingAndSayWhy) {
   SilentProgress progress;
   const std::vector<PosedFrame> two{{0, Eigen::Isometry3d::Identity()},
@@ -132,6 +149,10 @@ TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
   EXPECT_EQ(choice.detector.mode, DetectorMode::None);
   EXPECT_FALSE(choice.model);
   EXPECT_NE(choice.reason.find("noise-free"), std::string::npos) << choice.reason;
+  DetectorParams none;
+  none.mode = DetectorMode::None;
+  const NoiseChoice off = chooseNoiseModel(m, frames, none, "", nullptr, progress);
+  EXPECT_EQ(off.reason, "no denoising (detector none)");  // nothing to warn of
 }
 
 // A pitched-down survey of the seabed on the realistic beam: the seabed lights most pixels of
