@@ -553,7 +553,8 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   runner_->cancel();
   const bool another = mission_ && mission_->folder != mission->folder;
   mission_ = mission;
-  read_beam_width_rad_ = 0.0;  // read again for this mission (readBeamWidth)
+  beam_width_job_.discard();  // read again for this mission (readBeamWidth)
+  read_beam_width_rad_ = 0.0;
   beam_width_frames_.reset();
   view_settled_ = false;
   last_pick_.reset();
@@ -607,8 +608,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   map_view_->setIntensityUnit(mission_->sonar.intensityScale().isLinear() ? tr("counts")
                                                                           : tr("power"));
   timeline_->setFrameTimes(times);
-  readBeamWidth();
-  updateDetector();
+  followParams();
   showFrame(0);
   addRecent(QString::fromStdString(mission_->folder.string()));
   log(tr("opened %1: %2 frames, sonar %3 (%4 beams x %5 bins)")
@@ -622,36 +622,38 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
 }
 
 void MainWindow::readBeamWidth() {
-  const ReconstructionParams p = params_panel_->params();
-  if (carvingSonar(*mission_, p).horizontalBeamWidth() > 0.0) {
-    // Given by the mission or the analyst: nothing to read, and a reading under way is moot.
-    beam_width_job_.discard();
-    beam_width_frames_.reset();
-    read_beam_width_rad_ = 0.0;
+  if (!mission_) {
     return;
   }
-  // The frames a run with these parameters reads; read again only when they change.
+  const ReconstructionParams p = params_panel_->params();
+  if (p.horizontal_beam_width_rad > 0.0 || mission_->sonar.horizontalBeamWidth() > 0.0) {
+    return;  // given: nothing to read (updateDetector ignores a reading still under way)
+  }
+  // The frames a run with these parameters reads; read again only when they change, the last
+  // width standing in meanwhile (the same sonar's).
   std::vector<std::size_t> frames = placedFrames(*mission_, p);
   if (beam_width_frames_ && *beam_width_frames_ == frames) {
     return;
   }
   beam_width_job_.discard();
-  read_beam_width_rad_ = 0.0;
   beam_width_frames_ = frames;
-  log(tr("reading the beams' width from %1 frames (the mission gives none)").arg(frames.size()));
+  log(tr("reading the beams' width from %1 of %2 frames (neither the mission nor the parameters "
+         "give one)")
+          .arg(std::min(frames.size(), kBeamWidthFrames))
+          .arg(frames.size()));
   beam_width_job_.start(
       [mission = mission_, frames = std::move(frames)](JobContext& context) {
-        return chooseBeamWidth(*mission, mission->sonar, frames, context)
-            .sonar.horizontalBeamWidth();
+        return chooseBeamWidth(*mission, mission->sonar, frames, context);
       },
-      [this](double width) {
-        read_beam_width_rad_ = width;
-        if (width > 0.0) {
-          updateDetector();
-          showFrame(timeline_->currentFrame());
-        }
+      [this](const BeamWidthChoice& choice) {
+        read_beam_width_rad_ = choice.sonar.horizontalBeamWidth();
+        log(tr("beams' width: %1").arg(QString::fromStdString(choice.reason)));
+        updateDetector();
+        showFrame(timeline_->currentFrame());
       },
-      [](const JobError&) {});  // a run reads it again, and its log says why
+      [this](const JobError& error) {
+        log(tr("beams' width not read: %1").arg(error.message));  // a run reads it again
+      });
 }
 
 void MainWindow::updateDetector() {
@@ -744,10 +746,7 @@ void MainWindow::drawFrame(const ShownFrame& shown) {
 
 void MainWindow::setParams(const ReconstructionParams& params) {
   params_panel_->setParams(params);
-  if (mission_) {
-    readBeamWidth();
-  }
-  updateDetector();
+  followParams();
 }
 
 void MainWindow::updateColourChoices() {
@@ -771,11 +770,13 @@ void MainWindow::setColourBy(widgets::MapView::ColourBy by) {
   colour_by_->setCurrentIndex(static_cast<int>(by));
 }
 
-void MainWindow::paramsEdited() {
-  if (mission_) {
-    readBeamWidth();
-  }
+void MainWindow::followParams() {
+  readBeamWidth();
   updateDetector();
+}
+
+void MainWindow::paramsEdited() {
+  followParams();
   showFrame(timeline_->currentFrame());
   if (mission_) {
     log(tr("parameters changed: re-running"));
@@ -958,8 +959,9 @@ bool MainWindow::openSession(const QString& file) {
     showError(tr("Cannot open the session"), describe(e));
     return false;
   }
-  setParams(s.params);
+  params_panel_->setParams(s.params);  // followed by the mission it opens, not the one open
   if (!openMissionWith(QString::fromStdString(s.mission), false)) {
+    followParams();  // the mission still open takes them
     return false;
   }
   map_view_->setCameraState(s.camera);

@@ -141,6 +141,7 @@ class MainWindow : public QMainWindow {
   void drawFrame(const ShownFrame& shown);
   void paramsEdited();
   void readBeamWidth();
+  void followParams();  // the width and the detector, after the parameters changed
   void updateDetector();
   /// A session, a vendor log (through the import dialog) or a mission, by what `path` is.
   void openPath(const QString& path);

@@ -471,7 +471,7 @@ class WorkbenchTest : public QObject {
 
   // A mission that does not give its beams' width: the workbench reads it for the denoised
   // view from the frames a run reads, again only when those change, and never when the analyst
-  // gives the width.
+  // gives the width; the log says what it reads and what it found.
   void beamWidthIsReadOnlyWhenNobodyGivesIt() {
     const QString reading = "reading the beams' width";
     MainWindow window;
@@ -485,7 +485,8 @@ class WorkbenchTest : public QObject {
 
     window.setParams(sonarcarve::ReconstructionParams{});  // the analyst clears the width
     QCOMPARE(window.logText().count(reading), 1);
-    QVERIFY(window.logText().contains(reading + " from 24 frames"));
+    QVERIFY(window.logText().contains(reading + " from 24 of 24 frames"));
+    QTRY_VERIFY_WITH_TIMEOUT(window.logText().contains("beams' width: "), 60000);
     QSignalSpy edited(&window.paramsPanel(), &sonarcarve::widgets::ParamsPanel::paramsEdited);
     window.paramsPanel().voxelSize()->setValue(4.0);  // the same frames: nothing to read again
     QVERIFY(edited.wait(5000));
@@ -493,8 +494,9 @@ class WorkbenchTest : public QObject {
     sonarcarve::ReconstructionParams every_other;
     every_other.stride = 2;
     window.setParams(every_other);
-    QVERIFY(window.logText().contains(reading + " from 12 frames"));
+    QVERIFY(window.logText().contains(reading + " from 12 of 12 frames"));
     window.setParams(given);
+    window.setParams(every_other);  // given, then cleared again: the same frames, read already
     QCOMPARE(window.logText().count(reading), 2);
     QVERIFY(waitForResult(window, 120000));
   }
