@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstddef>
 #include <string>
+#include <utility>
 
 namespace sonarcarve {
 
@@ -27,6 +28,21 @@ class SilentProgress : public Progress {
 
  private:
   std::atomic<bool> cancelled_{false};
+};
+
+/// Another step's progress under this step's name (a step that reuses one written for
+/// another purpose); cancellation passes through.
+class RenamedProgress : public Progress {
+ public:
+  RenamedProgress(Progress& inner, std::string stage) : inner_(inner), stage_(std::move(stage)) {}
+  void report(const std::string&, std::size_t done, std::size_t total) override {
+    inner_.report(stage_, done, total);
+  }
+  bool cancelled() const override { return inner_.cancelled(); }
+
+ private:
+  Progress& inner_;
+  std::string stage_;
 };
 
 /// Thrown by engine steps that stop because Progress::cancelled() became true.

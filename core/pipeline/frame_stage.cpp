@@ -46,21 +46,20 @@ constexpr std::size_t kSpeckleCheckFrames = 8;
 /// background (speckle), which carving without a detector keeps as structure; empty otherwise.
 std::string speckleLeftIn(const Mission& mission, const std::vector<std::size_t>& indices,
                           int smoothing, Progress& progress) {
+  RenamedProgress checking(progress, "speckle check");
   MissionNoiseStats stats;
   try {
-    learnNoiseFromMission(mission, indices, smoothing, progress, &stats, kSpeckleCheckFrames);
+    learnNoiseFromMission(mission, indices, smoothing, checking, &stats, kSpeckleCheckFrames);
   } catch (const Error&) {
     return "";  // too few frames to tell
   }
   if (!stats.has_background()) {
     return "";
   }
-  char median[32];
-  std::snprintf(median, sizeof median, "%.3g", stats.background_median);
-  return "; warning: the frames carry background noise (speckle: over " +
-         std::to_string(stats.frames_used) + " frames the median pixel's mean is " + median +
-         "), which carving without a detector keeps as structure; the detector auto learns a "
-         "noise model from the frames";
+  return "; warning: " + std::to_string(stats.frames_used) +
+         " frames checked carry background noise (speckle), which carving without a detector "
+         "keeps as structure: use the detector auto (the default), or give an empty-water "
+         "noise model (--noise-model)";
 }
 
 }  // namespace

@@ -119,7 +119,8 @@ TEST_F(MissionNoise, DetectorNoneOnSpeckleWarns) {
       chooseNoiseModel(mission("riser"), frames, none, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::None);
   EXPECT_FALSE(choice.model);
-  EXPECT_NE(choice.reason.find("warning: the frames carry background noise"), std::string::npos)
+  EXPECT_NE(choice.reason.find("warning: 8 frames checked carry background noise"),
+            std::string::npos)
       << choice.reason;
 }
 
@@ -186,6 +187,10 @@ TEST(MissionNoiseFree, ASeabedInEveryFrameIsNotTakenForNoise) {
     frames.push_back({i, Eigen::Isometry3d::Identity()});
   const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::None) << choice.reason;
+  DetectorParams none;  // the detector turned off: no speckle to warn of either
+  none.mode = DetectorMode::None;
+  EXPECT_EQ(chooseNoiseModel(m, frames, none, "", nullptr, progress).reason,
+            "no denoising (detector none)");
 }
 
 // A noisy seabed survey (seabed-objects' lawnmower, realistic beam): the seabed returns in
