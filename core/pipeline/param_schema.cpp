@@ -54,14 +54,19 @@ ParamAccess field(Ref ref) {
   return a;
 }
 
+// The detector a run may use: `auto` runs the Z-test with the given model or one it learns
+// from the mission's frames (none only on noise-free frames), so what tunes the Z-test tunes it.
+DetectorMode detectorRun(const Params& p) {
+  return p.detector.mode == DetectorMode::Auto ? DetectorMode::ZTest : p.resolvedDetectorMode();
+}
 bool usesZTest(const Params& p) {
-  return p.resolvedDetectorMode() == DetectorMode::ZTest;
+  return detectorRun(p) == DetectorMode::ZTest;
 }
 bool usesCfar(const Params& p) {
-  return p.resolvedDetectorMode() == DetectorMode::Cfar;
+  return detectorRun(p) == DetectorMode::Cfar;
 }
 bool usesDetector(const Params& p) {
-  return p.resolvedDetectorMode() != DetectorMode::None;
+  return detectorRun(p) != DetectorMode::None;
 }
 bool usesFastEngine(const Params& p) {
   return p.engine == Engine::Fast;
@@ -100,8 +105,8 @@ std::vector<ParamSpec> makeSchema() {
        .access = field([](auto& p) -> auto& { return p.detector.mode; })},
       {.key = "detector.z",
        .unit = "σ",
-       .help = "Z-test: a pixel is kept where its smoothed value exceeds the empty-water mean by "
-               "this many standard deviations",
+       .help = "Z-test: a pixel is kept where its smoothed value exceeds the noise model's mean "
+               "by this many standard deviations",
        .flag = "--z",
        .gui = {.group = "Denoising",
                .label = "Z threshold",

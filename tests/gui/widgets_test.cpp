@@ -135,10 +135,20 @@ TEST_F(Widgets, ParamsPanelHasAnEditorForEveryParameterOfTheSchema) {
   ASSERT_NE(decimate, nullptr);
   decimate->setValue(0.5);
   EXPECT_DOUBLE_EQ(panel.params().mesh.decimate, 0.5);
-  // Entries that do not apply are greyed out: CFAR's without the CFAR detector.
+  // Entries that do not apply are greyed out: CFAR's without the CFAR detector. The default
+  // detector (auto) runs the Z-test with a model learned from the mission when none is given,
+  // so its threshold and smoothing can be tuned; without a detector neither applies.
+  EXPECT_EQ(panel.params().detector.mode, DetectorMode::Auto);
+  EXPECT_TRUE(panel.params().noise_model.empty());
   EXPECT_FALSE(panel.editor("detector.cfar_pfa")->isEnabled());
+  EXPECT_TRUE(panel.zThreshold()->isEnabled());
+  EXPECT_TRUE(panel.editor("detector.smoothing")->isEnabled());
+  panel.detectorMode()->setCurrentText("none");
+  EXPECT_FALSE(panel.zThreshold()->isEnabled());
+  EXPECT_FALSE(panel.editor("detector.smoothing")->isEnabled());
   panel.detectorMode()->setCurrentText("cfar");
   EXPECT_TRUE(panel.editor("detector.cfar_pfa")->isEnabled());
+  EXPECT_FALSE(panel.zThreshold()->isEnabled());
   EXPECT_EQ(panel.params().detector.mode, DetectorMode::Cfar);
 }
 
