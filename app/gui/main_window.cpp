@@ -426,6 +426,22 @@ void MainWindow::wireRunner() {
           [this](int, qulonglong index) { latest_carved_frame_ = static_cast<long>(index); });
   connect(runner_.get(), &ReconstructionRunner::frameSkipped, this,
           [this](int, const QString& message) { log(tr("skipped: %1").arg(message)); });
+  connect(runner_.get(), &ReconstructionRunner::noiseModelChosen, this,
+          [this](int, std::shared_ptr<const NoiseModel> model) {
+            const ReconstructionParams p = params_panel_->params();
+            if (!p.noise_model.empty() || p.detector.mode != DetectorMode::Auto) {
+              return;  // the view has its own model, or its detector needs none
+            }
+            const bool first = !run_noise_model_ && model;
+            run_noise_model_ = std::move(model);
+            updateDetector();
+            showFrame(timeline_->currentFrame());
+            if (first) {
+              log(
+                  tr("denoised view: the Z-test with the noise model the run learned from the "
+                     "mission's own frames"));
+            }
+          });
   connect(runner_.get(), &ReconstructionRunner::finished, this,
           [this](int, std::shared_ptr<const ReconstructionResult> result,
                  std::shared_ptr<widgets::MapView::PreparedResult> view,
@@ -553,6 +569,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   runner_->cancel();
   const bool another = mission_ && mission_->folder != mission->folder;
   mission_ = mission;
+  run_noise_model_.reset();   // learned again by this mission's run
   beam_width_job_.discard();  // read again for this mission (readBeamWidth)
   read_beam_width_rad_ = 0.0;
   beam_width_frames_.reset();
@@ -693,10 +710,25 @@ void MainWindow::updateDetector() {
         sonar.horizontalBeamWidth() > 0.0 || !(read_beam_width_rad_ > 0.0)
             ? sonar
             : sonar.withHorizontalBeamWidth(read_beam_width_rad_));
-    detector_ = std::make_shared<const Detector>(p.detector, noise_model_, mission_->sonar);
+    detector_ = std::make_shared<const Detector>(p.detector, viewNoiseModel(p), mission_->sonar);
   } catch (const std::exception& e) {
     log(tr("denoised view unavailable: %1").arg(describe(e)));
   }
+}
+
+DetectorMode MainWindow::denoisedViewDetector() const {
+  return detector_ ? detector_->params().mode : DetectorMode::None;
+}
+
+std::shared_ptr<const NoiseModel> MainWindow::viewNoiseModel(const ReconstructionParams& p) const {
+  if (!p.noise_model.empty()) {
+    return noise_model_;
+  }
+  // The detector auto with no model: the one the last run learned from the mission's frames,
+  // while it fits these parameters (a run learns another after a change of smoothing).
+  const bool fits = run_noise_model_ && p.detector.mode == DetectorMode::Auto &&
+                    run_noise_model_->smoothing() == p.detector.smoothing;
+  return fits ? run_noise_model_ : nullptr;
 }
 
 void MainWindow::showFrame(int index) {

@@ -109,6 +109,8 @@ class MainWindow : public QMainWindow {
   widgets::RunHistoryPanel& runHistoryPanel() { return *history_panel_; }
   const std::vector<RunRecord>& runs() const { return runs_; }
   QString logText() const;
+  /// The detector the denoised view runs (None: it shows the frame as it is).
+  DetectorMode denoisedViewDetector() const;
 
  signals:
   void runFinished(std::shared_ptr<const ReconstructionResult> result);
@@ -143,6 +145,8 @@ class MainWindow : public QMainWindow {
   void readBeamWidth();
   void followParams();  // the width and the detector, after the parameters changed
   void updateDetector();
+  /// The noise model the denoised view's detector uses with parameters `p` (null: none).
+  std::shared_ptr<const NoiseModel> viewNoiseModel(const ReconstructionParams& p) const;
   /// A session, a vendor log (through the import dialog) or a mission, by what `path` is.
   void openPath(const QString& path);
   /// Opens a mission; `own_params`: a mission opened after another starts from the parameters
@@ -169,6 +173,8 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const Detector> detector_;
   std::shared_ptr<const BearingDeblur> deblur_;  // the beams' blur, as carving takes it out
   std::shared_ptr<const NoiseModel> noise_model_;
+  // The model the last run learned from the mission's own frames (the detector auto, no file).
+  std::shared_ptr<const NoiseModel> run_noise_model_;
   std::string noise_model_path_;
   ReconstructionParams run_params_;
 

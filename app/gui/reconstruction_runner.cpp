@@ -14,18 +14,21 @@ class JobObserver : public ReconstructionObserver {
   using PostBlocks = std::function<void(std::vector<widgets::MapViewBlock>)>;
   using PostFrame = std::function<void(std::size_t)>;
   using PostSkip = std::function<void(std::string)>;
+  using PostNoise = std::function<void(std::shared_ptr<const NoiseModel>)>;
   JobObserver(std::shared_ptr<const MeshDistance> truth, std::size_t max_cached_voxels,
-              PostBlocks blocks, PostFrame frame, PostSkip skip)
+              PostBlocks blocks, PostFrame frame, PostSkip skip, PostNoise noise)
       : max_cached_voxels_(max_cached_voxels),
         truth_(std::move(truth)),
         blocks_(std::move(blocks)),
         frame_(std::move(frame)),
-        skip_(std::move(skip)) {}
+        skip_(std::move(skip)),
+        noise_(std::move(noise)) {}
 
   void frameCarved(std::size_t index, const Frame&, const Eigen::Isometry3d&) override {
     frame_(index);
   }
   void frameSkipped(const FrameProblem& problem) override { skip_(problem.message); }
+  void noiseModelChosen(const std::shared_ptr<const NoiseModel>& model) override { noise_(model); }
   void mapUpdated(const MapUpdate& update) override {
     std::vector<widgets::MapViewBlock> blocks;
     blocks.reserve(update.blocks.size());
@@ -127,6 +130,7 @@ class JobObserver : public ReconstructionObserver {
   PostBlocks blocks_;
   PostFrame frame_;
   PostSkip skip_;
+  PostNoise noise_;
 };
 
 }  // namespace
@@ -161,6 +165,11 @@ int ReconstructionRunner::start(RunRequest request) {
             [this, current, &progress](std::string message) {
               progress.post([this, current, message] {
                 emit frameSkipped(current(), QString::fromStdString(message));
+              });
+            },
+            [this, current, &progress](std::shared_ptr<const NoiseModel> model) {
+              progress.post([this, current, model = std::move(model)] {
+                emit noiseModelChosen(current(), model);
               });
             });
         auto result = std::make_shared<const ReconstructionResult>(

@@ -63,6 +63,8 @@ class ReconstructionRunner : public QObject {
   void blocksChanged(int job, const std::vector<widgets::MapViewBlock>& blocks);
   void frameCarved(int job, qulonglong frame_index);
   void frameSkipped(int job, const QString& message);
+  /// The noise model the job's detector uses (null: none), learned or given, before it carves.
+  void noiseModelChosen(int job, std::shared_ptr<const NoiseModel> model);
   /// `view`: the surface and the mesh with their errors against the truth (none without one)
   /// and their layers, built on the worker for the request's colouring and clip (for
   /// MapView::setResult); `surface_points`: the surface's positions (to measure it).

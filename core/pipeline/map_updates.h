@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "carve/voxel_map.h"
@@ -13,6 +14,8 @@
 #include "sonar/frame.h"
 
 namespace sonarcarve {
+
+class NoiseModel;
 
 struct MapBlockUpdate {
   std::size_t block = 0;
@@ -33,6 +36,9 @@ class ReconstructionObserver {
                            const Eigen::Isometry3d& /*T_world_sonar*/) {}
   virtual void mapUpdated(const MapUpdate& /*update*/) {}
   virtual void frameSkipped(const FrameProblem& /*problem*/) {}
+  /// The noise model the run's detector uses, given or learned from the mission's frames
+  /// (null: none), before any frame is carved.
+  virtual void noiseModelChosen(const std::shared_ptr<const NoiseModel>& /*model*/) {}
 };
 
 /// Blocks of `map` changed after stamp `since`, plus those `previous` (a map of the same

@@ -125,6 +125,9 @@ ReconstructionResult Pipeline::run(Progress& progress, ReconstructionObserver* o
   }
   result.detector = std::string(toString(noise.detector.mode));
   result.denoising = noise.reason;
+  if (observer) {
+    observer->noiseModelChosen(noise.model);
+  }
   // Beams wider than their spacing blur each row across bearing: taken out of the frames,
   // with the width the sonar declares or, failing that, one read from the frames.
   // A run that reads no frame (startFrom without carving) reads none for it either.

@@ -57,6 +57,25 @@ std::shared_ptr<const ReconstructionResult> waitForResult(MainWindow& window, in
   return finished.front().front().value<std::shared_ptr<const ReconstructionResult>>();
 }
 
+// The riser demo scene on the paper's clipped beam: `frames` frames, with `noise`, of the
+// structure or of empty water, into `out`.
+void simulateRiser(const fs::path& out, const sonarcarve::NoiseSpec& noise, bool empty_water,
+                   int frames) {
+  sonarcarve::SimulationRequest request{sonarcarve::makeDemoScene("riser"),
+                                        "riser",
+                                        sonarcarve::test::paperSonar(),
+                                        sonarcarve::TrajectorySpec{},
+                                        sonarcarve::test::clippedBeam(),
+                                        noise,
+                                        sonarcarve::NavErrorSpec{},
+                                        empty_water,
+                                        frames,
+                                        out};
+  sonarcarve::SilentProgress progress;
+  sonarcarve::ThreadPool pool;
+  sonarcarve::runSimulation(request, progress, pool);
+}
+
 }  // namespace
 
 Q_DECLARE_METATYPE(std::shared_ptr<const sonarcarve::ReconstructionResult>)
@@ -69,20 +88,7 @@ class WorkbenchTest : public QObject {
     QStandardPaths::setTestModeEnabled(true);
     qRegisterMetaType<std::shared_ptr<const ReconstructionResult>>();
     scratch_ = std::make_unique<sonarcarve::test::ScratchDir>();
-    sonarcarve::TrajectorySpec trajectory;
-    sonarcarve::SimulationRequest request{sonarcarve::makeDemoScene("riser"),
-                                          "riser",
-                                          sonarcarve::test::paperSonar(),
-                                          trajectory,
-                                          sonarcarve::test::clippedBeam(),
-                                          sonarcarve::NoiseSpec::none(),
-                                          sonarcarve::NavErrorSpec{},
-                                          false,
-                                          24,
-                                          mission()};
-    sonarcarve::SilentProgress progress;
-    sonarcarve::ThreadPool pool;
-    sonarcarve::runSimulation(request, progress, pool);
+    simulateRiser(mission(), sonarcarve::NoiseSpec::none(), false, 24);
   }
 
   // The demo scene's mission, run to the end: the map the GUI shows and the surface it exports
@@ -501,23 +507,35 @@ class WorkbenchTest : public QObject {
     QVERIFY(waitForResult(window, 120000));
   }
 
+  // A noisy mission opened with no options: the run learns the noise from the mission's own
+  // frames, and the denoised view runs the Z-test with that model instead of showing the
+  // speckle as it is; after a change of smoothing the model no longer fits until a run learns
+  // another.
+  void denoisedViewUsesTheModelTheRunLearned() {
+    const fs::path noisy = scratch_->path() / "noisy";
+    simulateRiser(noisy, sonarcarve::NoiseSpec{}, false, 8);
+    MainWindow window;
+    window.show();
+    QVERIFY(window.openMission(QString::fromStdString(noisy.string())));
+    QVERIFY(window.denoisedViewDetector() == sonarcarve::DetectorMode::None);  // nothing learned
+    const auto result = waitForResult(window, 120000);
+    QVERIFY(result);
+    QCOMPARE(QString::fromStdString(result->detector), QString("ztest"));
+    QVERIFY(window.denoisedViewDetector() == sonarcarve::DetectorMode::ZTest);
+    QVERIFY2(window.logText().contains("denoised view: the Z-test with the noise model the run "
+                                       "learned"),
+             qPrintable(window.logText()));
+    sonarcarve::ReconstructionParams other_smoothing = window.paramsPanel().params();
+    other_smoothing.detector.smoothing = 1;
+    window.setParams(other_smoothing);
+    QVERIFY(window.denoisedViewDetector() == sonarcarve::DetectorMode::None);
+  }
+
   // File > Learn a noise model from empty water: learned on a worker, written, made the
   // parameters' noise model, and the open mission re-runs with the Z-test on it.
   void learnsANoiseModelFromEmptyWater() {
     const fs::path empty = scratch_->path() / "empty";
-    sonarcarve::SimulationRequest request{sonarcarve::makeDemoScene("riser"),
-                                          "riser",
-                                          sonarcarve::test::paperSonar(),
-                                          sonarcarve::TrajectorySpec{},
-                                          sonarcarve::test::clippedBeam(),
-                                          sonarcarve::NoiseSpec{},
-                                          sonarcarve::NavErrorSpec{},
-                                          true,
-                                          8,
-                                          empty};
-    sonarcarve::SilentProgress progress;
-    sonarcarve::ThreadPool pool;
-    sonarcarve::runSimulation(request, progress, pool);
+    simulateRiser(empty, sonarcarve::NoiseSpec{}, true, 8);
     MainWindow window;
     window.show();
     QVERIFY(window.openMission(QString::fromStdString(mission().string())));

@@ -63,6 +63,14 @@ struct Recorder : ReconstructionObserver {
     carved.push_back(index);
   }
   void frameSkipped(const FrameProblem& p) override { skipped.push_back(p); }
+  int noise_calls = 0;
+  bool noise_before_frames = false;
+  std::shared_ptr<const NoiseModel> noise;
+  void noiseModelChosen(const std::shared_ptr<const NoiseModel>& model) override {
+    ++noise_calls;
+    noise_before_frames = carved.empty();
+    noise = model;
+  }
   void mapUpdated(const MapUpdate& update) override {
     for (const auto& b : update.blocks) {
       blocks[b.block] = b.points;
@@ -93,6 +101,10 @@ TEST_F(Pipeline, ViewerUpdatesAddUpToTheFinalMap) {
   const Mission m = readMission(mission());
   const ReconstructionResult r = runPipeline(m, ReconstructionParams{}, progress, &recorder, 5);
   EXPECT_EQ(recorder.carved.size(), 24u);
+  // The viewer hears of the denoising once, before any frame: none on noise-free frames.
+  EXPECT_EQ(recorder.noise_calls, 1);
+  EXPECT_TRUE(recorder.noise_before_frames);
+  EXPECT_FALSE(recorder.noise);
   std::set<std::tuple<float, float, float>> shown, actual;
   for (const auto& [block, points] : recorder.blocks) {
     for (const auto& p : points)
