@@ -426,22 +426,27 @@ void MainWindow::wireRunner() {
           [this](int, qulonglong index) { latest_carved_frame_ = static_cast<long>(index); });
   connect(runner_.get(), &ReconstructionRunner::frameSkipped, this,
           [this](int, const QString& message) { log(tr("skipped: %1").arg(message)); });
-  connect(runner_.get(), &ReconstructionRunner::noiseModelChosen, this,
-          [this](int, std::shared_ptr<const NoiseModel> model) {
-            const ReconstructionParams p = params_panel_->params();
-            if (!p.noise_model.empty() || p.detector.mode != DetectorMode::Auto) {
-              return;  // the view has its own model, or its detector needs none
-            }
-            const bool first = !run_noise_model_ && model;
-            run_noise_model_ = std::move(model);
-            updateDetector();
-            showFrame(timeline_->currentFrame());
-            if (first) {
-              log(
-                  tr("denoised view: the Z-test with the noise model the run learned from the "
-                     "mission's own frames"));
-            }
-          });
+  connect(
+      runner_.get(), &ReconstructionRunner::noiseModelChosen, this,
+      [this](int, std::shared_ptr<const NoiseModel> model) {
+        // Only a model the run learned (the run's own parameters: the panel's may have
+        // changed since); whether the view uses it is for viewNoiseModel to say.
+        if (!run_params_.noise_model.empty() || run_params_.detector.mode != DetectorMode::Auto) {
+          return;
+        }
+        if (model == run_noise_model_) {
+          return;
+        }
+        const DetectorMode before = denoisedViewDetector();
+        run_noise_model_ = std::move(model);
+        updateDetector();
+        showFrame(timeline_->currentFrame());
+        if (before != DetectorMode::ZTest && denoisedViewDetector() == DetectorMode::ZTest) {
+          log(
+              tr("denoised view: the Z-test with the noise model the run learned from the "
+                 "mission's own frames"));
+        }
+      });
   connect(runner_.get(), &ReconstructionRunner::finished, this,
           [this](int, std::shared_ptr<const ReconstructionResult> result,
                  std::shared_ptr<widgets::MapView::PreparedResult> view,

@@ -3,10 +3,10 @@
 // late results are dropped (superseded). Results reach the GUI thread as values through
 // queued calls: map blocks that changed (with their error against the ground truth, computed
 // on the worker), progress (at most every BackgroundJob::kProgressInterval_ms), skipped
-// frames, the final result (with the 3D view's layers of its surface and mesh built on the
-// worker) or an error. Pause holds the worker at its next cancellation
-// check. The GUI thread never waits on a worker, except in the destructor, which cancels
-// every job and joins its thread.
+// frames, the noise model the run denoises with (given or learned, before it carves), the final
+// result (with the 3D view's layers of its surface and mesh built on the worker) or an error. Pause
+// holds the worker at its next cancellation check. The GUI thread never waits on a worker, except
+// in the destructor, which cancels every job and joins its thread.
 #pragma once
 
 #include <QObject>

@@ -529,6 +529,14 @@ class WorkbenchTest : public QObject {
     other_smoothing.detector.smoothing = 1;
     window.setParams(other_smoothing);
     QVERIFY(window.denoisedViewDetector() == sonarcarve::DetectorMode::None);
+    // Back to the learned model's smoothing: the view takes it again.
+    window.setParams(sonarcarve::ReconstructionParams{});
+    QVERIFY(window.denoisedViewDetector() == sonarcarve::DetectorMode::ZTest);
+    // Another mission: the model learned from this one's frames is not its.
+    QVERIFY(window.openMission(QString::fromStdString(mission().string())));
+    QVERIFY(window.denoisedViewDetector() == sonarcarve::DetectorMode::None);
+    QVERIFY(waitForResult(window, 120000));
+    QVERIFY(window.denoisedViewDetector() == sonarcarve::DetectorMode::None);  // noise-free
   }
 
   // File > Learn a noise model from empty water: learned on a worker, written, made the

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "common/error.h"
+#include "denoise/noise_model.h"
 #include "pipeline/reconstruction.h"
 #include "sim/demo_scenes.h"
 #include "sim/simulation_run.h"
@@ -115,6 +116,35 @@ TEST_F(Pipeline, ViewerUpdatesAddUpToTheFinalMap) {
     actual.insert({c.x(), c.y(), c.z()});
   });
   EXPECT_EQ(shown, actual);
+}
+
+// On noisy frames with no model given, the viewer hears of the model the run learned from them,
+// with the run's smoothing, before any frame is carved.
+TEST(PipelineNoisy, ViewerHearsOfTheLearnedNoiseModel) {
+  const test::ScratchDir dir;
+  SimulationRequest request{makeDemoScene("riser"),
+                            "riser",
+                            paperSonar(),
+                            TrajectorySpec{},
+                            test::clippedBeam(),
+                            NoiseSpec{},
+                            NavErrorSpec{},
+                            false,
+                            8,
+                            dir.path() / "m"};
+  SilentProgress progress;
+  ThreadPool pool;
+  runSimulation(request, progress, pool);
+  Recorder recorder;
+  ReconstructionParams params;
+  params.detector.smoothing = 5;
+  const ReconstructionResult r =
+      runPipeline(readMission(dir.path() / "m"), params, progress, &recorder);
+  EXPECT_EQ(r.detector, "ztest");
+  EXPECT_EQ(recorder.noise_calls, 1);
+  EXPECT_TRUE(recorder.noise_before_frames);
+  ASSERT_TRUE(recorder.noise);
+  EXPECT_EQ(recorder.noise->smoothing(), 5);
 }
 
 TEST_F(Pipeline, ViewerUpdatesFollowTheOcclusionAwareSecondCarving) {
