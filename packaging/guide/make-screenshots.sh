@@ -72,7 +72,7 @@ xdotool key alt+f && sleep 1
 shot guide_file_menu.png
 xdotool key Return && sleep 2 && xdotool type --delay 30 "$work/riser-demo/mission" && sleep 1
 shot guide_open_dialog.png
-xdotool key Return && sleep 4
+xdotool key Return && sleep 8                                 # the model learned, the fan denoised
 shot guide_opened_no_noise_model.png
 xdotool mousemove 233 260 click 1 && sleep 2                  # Noise model: "…"
 xdotool type --delay 30 "$work/riser-demo/noise.yaml" && sleep 1 && xdotool key Return
