@@ -60,21 +60,22 @@ SonarModel sonarModelFromPing(const OculusPing& ping, std::optional<double> aper
 OculusImportPlan planOculusImport(const OculusLog& log, double time_offset_s,
                                   std::optional<double> aperture_deg) {
   const auto& pings = log.pings();
-  // The most common geometry (the first one on a tie).
+  // The most common geometry (the first one on a tie); each ping's format taken once.
+  std::vector<OculusPingFormat> formats;
+  formats.reserve(pings.size());
   std::map<OculusPingFormat, std::size_t> counts;
   for (const auto& entry : pings) {
-    ++counts[oculusPingFormat(entry.ping)];
+    ++counts[formats.emplace_back(oculusPingFormat(entry.ping))];
   }
   std::size_t best = 0;
   for (std::size_t i = 0; i < pings.size(); ++i) {
-    if (counts[oculusPingFormat(pings[i].ping)] > counts[oculusPingFormat(pings[best].ping)]) {
+    if (counts[formats[i]] > counts[formats[best]]) {
       best = i;
     }
   }
-  const OculusPingFormat key = oculusPingFormat(pings[best].ping);
   std::vector<std::size_t> used;
   for (std::size_t i = 0; i < pings.size(); ++i) {
-    if (oculusPingFormat(pings[i].ping) == key) {
+    if (formats[i] == formats[best]) {
       used.push_back(i);
     }
   }

@@ -146,10 +146,10 @@ cv::Mat IntensityScale::powerToCounts(const cv::Mat& image) const {
   if (isLinear()) {
     return image.clone();
   }
-  cv::Mat counts;
   if (!isDecibel()) {
     return powerLaw(image, full_scale_count_, gamma_);
   }
+  cv::Mat counts;
   cv::max(image, 1.0f, counts);  // powers up to count 1's, and no echo, are count 0
   cv::log(counts, counts);
   const double counts_per_neper = full_scale_count_ * 10.0 / (full_scale_db_ * std::log(10.0));
