@@ -21,10 +21,10 @@
 #include <string_view>
 #include <vector>
 
-#include "io/camera_state.h"
 #include "map_layers.h"
 #include "map_lod.h"
 #include "mesh/surface_mesher.h"
+#include "session/camera_state.h"
 #include "sonar/sonar_model.h"
 #include "view_clip.h"
 
@@ -39,7 +39,7 @@ class ColourLegend;
 class ScaleBar;
 class VtkGlWidget;
 
-/// Where the camera is, to save and restore a view (io/camera_state.h).
+/// Where the camera is, to save and restore a view (session/camera_state.h).
 using CameraState = sonarcarve::CameraState;
 
 class MapView : public QWidget {

@@ -7,7 +7,7 @@
 #include <QWidget>
 #include <vector>
 
-#include "io/run_record.h"
+#include "session/run_record.h"
 
 class QPushButton;
 class QTableWidget;

@@ -15,7 +15,7 @@
 #include "common/error.h"
 #include "common/process_memory.h"
 #include "common/thread_pool.h"
-#include "io/frame_png.h"
+#include "io/files/frame_png.h"
 #include "occlusion/occlusion_resolver.h"
 #include "pipeline/keep_level.h"
 #include "pipeline/reconstruction_params.h"

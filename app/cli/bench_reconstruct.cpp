@@ -8,7 +8,7 @@
 #include "cli/terminal_progress.h"
 #include "common/error.h"
 #include "common/progress_trace.h"
-#include "io/atomic_file.h"
+#include "io/files/atomic_file.h"
 #include "io/frame_source.h"
 #include "pipeline/reconstruction.h"
 

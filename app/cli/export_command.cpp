@@ -4,7 +4,7 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
-#include "io/run_manifest.h"
+#include "io/run/run_manifest.h"
 #include "mesh/mesh_export.h"
 
 namespace sonarcarve::cli {
@@ -41,7 +41,7 @@ void addExportCommand(CLI::App& app, int& exit_code) {
     }
     const std::filesystem::path folder(o->reconstruction);
     // A run that failed or never ended has left files of its own and none of an earlier run
-    // (io/run_manifest.h): exporting them would pass a partial result for a deliverable.
+    // (io/run/run_manifest.h): exporting them would pass a partial result for a deliverable.
     const std::optional<std::string> status = manifestStatus(folder);
     if (status && *status != "complete" && *status != "cancelled") {
       throw Error((folder / RunManifest::kFileName).string(), "status",

@@ -6,9 +6,9 @@
 #include "cli/source_flags.h"
 #include "common/error.h"
 #include "denoise/detector.h"
-#include "io/atomic_file.h"
-#include "io/mission.h"
-#include "io/png_codec.h"
+#include "io/files/atomic_file.h"
+#include "io/files/png_codec.h"
+#include "io/mission/mission.h"
 #include "sonar/fan_image.h"
 
 namespace sonarcarve::cli {

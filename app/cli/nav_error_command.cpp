@@ -7,9 +7,9 @@
 #include "cli/commands.h"
 #include "cli/nav_error_flags.h"
 #include "common/error.h"
-#include "io/atomic_file.h"
-#include "io/mission.h"
-#include "io/nav_csv.h"
+#include "io/files/atomic_file.h"
+#include "io/mission/mission.h"
+#include "io/mission/nav_csv.h"
 #include "sim/trajectory.h"
 
 namespace sonarcarve::cli {

@@ -10,7 +10,7 @@
 #include "denoise/detector.h"
 #include "denoise/mission_noise_model.h"
 #include "denoise/noise_model.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 
 namespace sonarcarve::cli {
 

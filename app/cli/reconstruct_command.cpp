@@ -8,22 +8,15 @@
 #include <vector>
 
 #include "carve/map_file.h"
-#include "carve/occupancy_export.h"
 #include "cli/commands.h"
 #include "cli/param_flags.h"
 #include "cli/source_flags.h"
 #include "cli/terminal_progress.h"
 #include "common/error.h"
-#include "io/atomic_file.h"
+#include "io/files/output_folder.h"
 #include "io/frame_source.h"
-#include "io/mission.h"
-#include "io/nav_csv.h"
-#include "io/output_folder.h"
-#include "io/run_manifest.h"
-#include "mesh/mesh_export.h"
+#include "io/mission/mission.h"
 #include "pipeline/reconstruction.h"
-#include "pipeline/refined_track.h"
-#include "pipeline/report.h"
 
 namespace sonarcarve::cli {
 namespace {
@@ -37,6 +30,7 @@ struct ReconstructOptions {
   bool save_map = false;
   std::string load_map;
   bool surface_only = false;
+  bool verbose = false;
 };
 
 // The --params file (or the defaults), then the flags on top.
@@ -47,54 +41,6 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
   applyParamFlags(*o.flags, p);
   p.validate();
   return p;
-}
-
-// Every file a run can write: one of an earlier run that this run does not rewrite is removed
-// when this run ends (io/run_manifest.h), so that `export` cannot take it for this run's.
-const std::vector<std::string> kOutputs = {"surface_points.ply", "map.bt",      "mesh.ply",
-                                           "mesh.stl",           "params.yaml", "report.json",
-                                           "refined_nav.csv",    "map.scmap"};
-
-void writeOutputs(const std::filesystem::path& out, const Mission& mission,
-                  const ReconstructionParams& params, const ReconstructionResult& result,
-                  const std::string& report, bool save_map, RunManifest& manifest) {
-  writeSurfacePointsPly(result.surface, out / "surface_points.ply");
-  manifest.wrote("surface_points.ply");
-  if (result.evicted) {
-    writeOccupancyBt(result.occupancy.sorted(), params.carve.voxel_size_m, out / "map.bt");
-    manifest.wrote("map.bt");
-  } else if (result.map) {
-    writeOccupancyBt(*result.map, out / "map.bt");
-    manifest.wrote("map.bt");
-    if (save_map) {
-      saveMap(*result.map, out / "map.scmap");
-      manifest.wrote("map.scmap");
-    }
-  }
-  if (!result.mesh.triangles.empty()) {
-    ExportOptions ply;
-    exportMesh(result.mesh, out / "mesh.ply", ply);
-    manifest.wrote("mesh.ply");
-    ExportOptions stl;
-    stl.format = "stl";
-    exportMesh(result.mesh, out / "mesh.stl", stl);
-    manifest.wrote("mesh.stl");
-  }
-  if (!result.refinement.empty()) {
-    writeFileAtomically(out / "refined_nav.csv",
-                        navCsvText(refinedTrack(mission, result.refinement)));
-    manifest.wrote("refined_nav.csv");
-  }
-  writeFileAtomically(out / "params.yaml", params.toYaml());
-  manifest.wrote("params.yaml");
-  writeFileAtomically(out / "report.json", report);
-  manifest.wrote("report.json");
-}
-
-void reportRemoved(const RunManifest& manifest) {
-  for (const std::filesystem::path& path : manifest.removed()) {
-    std::cerr << "removed " << path.string() << " of an earlier run\n";
-  }
 }
 
 int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
@@ -121,36 +67,28 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   const OutputFolderLock lock(out);
 
   TerminalProgress progress;
-  const ReconstructionResult result = pipeline.run(progress);
-  progress.finish();
-  for (const std::string& line : describeRunChoices(result, params.carve.dynamic_range_db)) {
-    std::cerr << line << "\n";
-  }
-  if (!result.temporary_file_problem.empty()) {
-    std::cerr << "warning: " << result.temporary_file_problem
-              << "; what the run sets aside in temporary files was kept in memory instead\n";
-  }
-  for (const FrameProblem& p : result.skipped) {
-    std::cerr << "skipped: " << p.message << "\n";
-  }
-  // The report first: it reads the ground truth, and a broken one must fail the run before any
-  // file is written.
-  const std::string report = reconstructionReport(mission, params, result, pool);
-  RunManifest manifest(out, arguments, kOutputs);
-  try {
-    writeOutputs(out, mission, params, result, report, o.save_map, manifest);
-  } catch (const Error& e) {
-    try {
-      manifest.finish("failed", e.what());
-    } catch (const Error&) {
-      // The manifest cannot be written either (a full disk): it still says "running".
+  const auto announce = [&progress, verbose = o.verbose](const ReconstructionResult& result) {
+    progress.finish();
+    for (const RunChoice& choice : result.choices) {
+      std::cerr << choiceLine(choice) << "\n";
+      if (verbose) {
+        std::cerr << choiceDetail(choice) << "\n";
+      }
     }
-    reportRemoved(manifest);
-    throw;
-  }
-  manifest.finish(result.cancelled ? "cancelled" : "complete");
-  reportRemoved(manifest);
-  std::cout << report;
+    if (!result.temporary_file_problem.empty()) {
+      std::cerr << "warning: " << result.temporary_file_problem
+                << "; what the run sets aside in temporary files was kept in memory instead\n";
+    }
+    for (const FrameProblem& p : result.skipped) {
+      std::cerr << "skipped: " << p.message << "\n";
+    }
+  };
+  const auto removed = [](const std::filesystem::path& path) {
+    std::cerr << "removed " << path.string() << " of an earlier run\n";
+  };
+  pipeline.writeOutputsTo({out, arguments, o.save_map, removed, announce});
+  const ReconstructionResult result = pipeline.run(progress);
+  std::cout << result.report;
   return result.cancelled ? 130 : 0;
 }
 
@@ -174,6 +112,8 @@ void addReconstructCommand(CLI::App& app, ThreadPool& pool,
   cmd->add_flag("--surface-only", o->surface_only,
                 "With --load-map: the frames do not carve, they only resolve the loaded map's "
                 "surface (the last step of a sharded run, docs/scaling.md)");
+  cmd->add_flag("--verbose", o->verbose,
+                "Under each automatic choice of the run, how it was derived and what to do");
   o->flags = addParamFlags(*cmd);
   addSourceFlags(*cmd, o->source);
   cmd->callback(

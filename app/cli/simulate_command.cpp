@@ -10,9 +10,9 @@
 #include "common/error.h"
 #include "common/input_limits.h"
 #include "geometry/scene_io.h"
-#include "io/bag_writer.h"
-#include "io/mission.h"
-#include "io/output_folder.h"
+#include "io/files/output_folder.h"
+#include "io/mission/mission.h"
+#include "io/rosbag/bag_writer.h"
 #include "sim/demo_scenes.h"
 #include "sim/simulation_run.h"
 

@@ -11,7 +11,7 @@
 #include <QPushButton>
 #include <QToolButton>
 
-#include "io/nav_import.h"
+#include "io/mission/nav_import.h"
 
 namespace sonarcarve::gui {
 

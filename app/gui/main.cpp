@@ -9,53 +9,91 @@
 #include <QFileInfo>
 #include <QTimer>
 #include <iostream>
+#include <string_view>
 
 #include "allocator.h"
 #include "desktop_integration.h"
 #include "frame_timeline.h"
-#include "io/session_file.h"
 #include "main_window.h"
 #include "map_view.h"
 #include "params_panel.h"
+#include "session/session_file.h"
 #include "vtk_gl_widget.h"
 
-int main(int argc, char** argv) {
-  sonarcarve::gui::tuneAllocatorForLatency();
-  sonarcarve::widgets::VtkGlWidget::setDefaultSurfaceFormat();
-  QApplication app(argc, argv);
-  QApplication::setApplicationName("SonarCarve");
-  QApplication::setOrganizationName("SonarCarve");
-  QApplication::setApplicationVersion(SONARCARVE_VERSION);
-  sonarcarve::gui::setUpDesktopIntegration();
+namespace {
 
-  QCommandLineParser parser;
-  parser.setApplicationDescription(
-      "SonarCarve workbench: 3D maps of underwater structures from 2D imaging sonar");
-  parser.addHelpOption();
-  parser.addVersionOption();
-  parser.addPositionalArgument("mission", "Mission folder or session file (.sonarcarve) to open");
-  const QCommandLineOption params({"p", "params"}, "Reconstruction parameters YAML", "file");
-  const QCommandLineOption noise({"n", "noise-model"}, "Noise model for the Z-test", "file");
-  const QCommandLineOption screenshot(
+// The workbench's command line, declared once for the help and for a run.
+struct GuiOptions {
+  QCommandLineOption params{{"p", "params"}, "Reconstruction parameters YAML", "file"};
+  QCommandLineOption noise{{"n", "noise-model"}, "Noise model for the Z-test", "file"};
+  QCommandLineOption screenshot{
       "screenshot",
       "Save a PNG of the window once the first run finishes (and, with a ground truth, its "
       "accuracy is measured)",
-      "file");
-  const QCommandLineOption quit("quit-when-done",
-                                "Exit once the first run finishes (as --screenshot has it)");
-  const QCommandLineOption frame("frame", "Frame to show once the first run finishes", "index");
-  const QCommandLineOption colour("colour-by", "intensity | depth | error", "mode");
-  const QCommandLineOption view_points(
+      "file"};
+  QCommandLineOption quit{"quit-when-done",
+                          "Exit once the first run finishes (as --screenshot has it)"};
+  QCommandLineOption frame{"frame", "Frame to show once the first run finishes", "index"};
+  QCommandLineOption colour{"colour-by", "intensity | depth | error", "mode"};
+  QCommandLineOption view_points{
       "view-points",
       QString("Most points of the carved map the 3D view holds (default %1): past it, the "
               "blocks changed longest ago are held coarser")
           .arg(sonarcarve::widgets::MapLod::kDefaultMaxPoints),
-      "count");
-  const QCommandLineOption show(
+      "count"};
+  QCommandLineOption show{
       "show",
       "3D view's layer once the first run finishes: map | surface | mesh (default: surface)",
-      "layer");
-  parser.addOptions({params, noise, screenshot, quit, frame, colour, view_points, show});
+      "layer"};
+
+  explicit GuiOptions(QCommandLineParser& parser) {
+    parser.setApplicationDescription(
+        "SonarCarve workbench: 3D maps of underwater structures from 2D imaging sonar");
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument("mission", "Mission folder or session file (.sonarcarve) to open");
+    parser.addOptions({params, noise, screenshot, quit, frame, colour, view_points, show});
+  }
+};
+
+void nameApplication() {
+  QCoreApplication::setApplicationName("SonarCarve");
+  QCoreApplication::setOrganizationName("SonarCarve");
+  QCoreApplication::setApplicationVersion(SONARCARVE_VERSION);
+}
+
+// --help and --version need no display: they are answered before any window system starts.
+bool asksOnlyForHelpOrVersion(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "-h" || arg == "--help" || arg == "--help-all" || arg == "-?" || arg == "-v" ||
+        arg == "--version") {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (asksOnlyForHelpOrVersion(argc, argv)) {
+    const QCoreApplication app(argc, argv);
+    nameApplication();
+    QCommandLineParser parser;
+    const GuiOptions options(parser);
+    parser.process(QCoreApplication::arguments());  // prints the help or version and exits
+    return 0;
+  }
+  sonarcarve::gui::tuneAllocatorForLatency();
+  sonarcarve::widgets::VtkGlWidget::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  nameApplication();
+  sonarcarve::gui::setUpDesktopIntegration();
+
+  QCommandLineParser parser;
+  const GuiOptions options(parser);
+  const auto& [params, noise, screenshot, quit, frame, colour, view_points, show] = options;
   parser.process(app);
 
   sonarcarve::gui::MainWindow window;

@@ -41,16 +41,17 @@
 #include "geometry/scene_io.h"
 #include "gui_conventions.h"
 #include "import_dialog.h"
-#include "io/atomic_file.h"
+#include "io/files/atomic_file.h"
 #include "io/frame_source.h"
-#include "io/oculus_log.h"
-#include "io/session_file.h"
+#include "io/oculus/oculus_log.h"
 #include "map_view.h"
 #include "mesh/mesh_export.h"
 #include "occlusion/surface_points.h"
 #include "params_panel.h"
 #include "pipeline/report.h"
+#include "run_choices_panel.h"
 #include "run_history_panel.h"
+#include "session/session_file.h"
 #include "track_view.h"
 
 namespace sonarcarve::gui {
@@ -188,6 +189,9 @@ void MainWindow::buildDocks() {
   history_panel_ = new widgets::RunHistoryPanel;
   tabifyDockWidget(accuracy_dock,
                    dock(tr("Run history"), "history", history_panel_, Qt::BottomDockWidgetArea));
+  choices_panel_ = new widgets::RunChoicesPanel;
+  tabifyDockWidget(accuracy_dock,
+                   dock(tr("Choices"), "choices", choices_panel_, Qt::BottomDockWidgetArea));
   accuracy_dock->raise();
   connect(history_panel_, &widgets::RunHistoryPanel::goBackRequested, this,
           &MainWindow::goBackToRun);
@@ -474,10 +478,10 @@ void MainWindow::wireRunner() {
                     .arg(result->mesh.triangles.size())
                     .arg(result->total_s, 0, 'f', 1)
                     .arg(result->carve_ms_median, 0, 'f', 1);
-            for (const std::string& line :
-                 describeRunChoices(*result, run_params_.carve.dynamic_range_db)) {
-              log(QString::fromStdString(line));
+            for (const RunChoice& choice : result->choices) {
+              log(QString::fromStdString(choiceLine(choice)));
             }
+            choices_panel_->setChoices(result->choices);
             log(summary);
             progress_label_->setText(summary);
             updateRunActions();
@@ -846,6 +850,7 @@ void MainWindow::startRun() {
   layer_->setCurrentIndex(0);
   releaseRun(std::move(shown_map));
   accuracy_job_.discard();  // of the run superseded
+  choices_panel_->clear();
   if (truth_mesh_) {
     accuracy_panel_->showPending();
   }

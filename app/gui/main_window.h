@@ -20,12 +20,12 @@
 #include "eval/evaluator.h"
 #include "frame_image.h"
 #include "io/import.h"
-#include "io/mission.h"
-#include "io/run_record.h"
+#include "io/mission/mission.h"
 #include "map_view.h"
 #include "pipeline/frame_stage.h"
 #include "pipeline/reconstruction.h"
 #include "reconstruction_runner.h"
+#include "session/run_record.h"
 #include "sonar/bearing_deblur.h"
 
 class QAction;
@@ -38,6 +38,7 @@ class QProgressDialog;
 
 namespace sonarcarve::widgets {
 class AccuracyPanel;
+class RunChoicesPanel;
 class FanView;
 class RunHistoryPanel;
 class FrameTimeline;
@@ -106,6 +107,7 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const ReconstructionResult> lastResult() const { return result_; }
   const Mission* mission() const { return mission_.get(); }
   widgets::AccuracyPanel& accuracyPanel() { return *accuracy_panel_; }
+  widgets::RunChoicesPanel& choicesPanel() { return *choices_panel_; }
   widgets::RunHistoryPanel& runHistoryPanel() { return *history_panel_; }
   const std::vector<RunRecord>& runs() const { return runs_; }
   QString logText() const;
@@ -185,6 +187,7 @@ class MainWindow : public QMainWindow {
   widgets::TrackView* track_view_ = nullptr;
   widgets::ParamsPanel* params_panel_ = nullptr;
   widgets::AccuracyPanel* accuracy_panel_ = nullptr;
+  widgets::RunChoicesPanel* choices_panel_ = nullptr;
   widgets::RunHistoryPanel* history_panel_ = nullptr;
   QPlainTextEdit* log_ = nullptr;
   QProgressBar* progress_bar_ = nullptr;

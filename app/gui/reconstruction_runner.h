@@ -17,7 +17,7 @@
 #include "background_job.h"
 #include "common/thread_pool.h"
 #include "eval/evaluator.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "map_view.h"
 #include "pipeline/reconstruction.h"
 

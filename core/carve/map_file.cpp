@@ -9,8 +9,8 @@
 
 #include "common/available_memory.h"
 #include "common/error.h"
-#include "io/atomic_file.h"
-#include "io/input_file.h"
+#include "io/files/atomic_file.h"
+#include "io/files/input_file.h"
 
 namespace sonarcarve {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.h"
+#include "io/files/atomic_file.h"
 
 // The .bt file is written as OctoMap's OcTree::writeBinary writes it, without building the
 // octree (hundreds of megabytes of nodes for a riser): the exported voxels lie in the map's

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "common/error.h"
-#include "io/temporary_file.h"
+#include "io/files/temporary_file.h"
 
 namespace sonarcarve {
 namespace {

@@ -1,6 +1,6 @@
 // OccupancyStore: the map.bt export blocks an evicting run collects as its pages are settled
 // (carve/occupancy_export.h), kept as their Morton keys in memory (16 bytes a block) and their
-// leaves (128 bytes) in an anonymous temporary file (io/temporary_file.h), so
+// leaves (128 bytes) in an anonymous temporary file (io/files/temporary_file.h), so
 // that what a long survey holds for its map.bt grows by a ninth of the blocks' size. Copies
 // share the file. Blocks the file cannot take (no temporary directory, a full disk) are kept
 // in memory instead, and problem() says why.

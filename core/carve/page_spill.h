@@ -1,8 +1,8 @@
 // PageSpill: pages of a VoxelMap set aside in an anonymous temporary file while no frame
 // reaches them, and held again, exactly as they were, before one does (an evicting run whose
 // survey comes back over ground it left: docs/scaling.md, "Pages set aside"). The file is an
-// anonymous temporary file (io/temporary_file.h); the room of a page held again is reused by the
-// next pages set aside, so the file is about as large as the most pages set aside at once (free
+// anonymous temporary file (io/files/temporary_file.h); the room of a page held again is reused by
+// the next pages set aside, so the file is about as large as the most pages set aside at once (free
 // room is joined with its neighbours).
 #pragma once
 

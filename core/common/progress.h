@@ -17,6 +17,9 @@ class Progress {
   virtual void report(const std::string& stage, std::size_t done, std::size_t total) = 0;
   /// True once the user asked to stop; the engine then stops at the next check.
   virtual bool cancelled() const = 0;
+  /// The whole run's progress, 0 to 1: the stages done and the share of the one running
+  /// (pipeline/stage.h). Nothing by default.
+  virtual void overall(double /*fraction*/) {}
 };
 
 /// Progress that reports nothing and is cancelled only through cancel().
@@ -39,6 +42,7 @@ class RenamedProgress : public Progress {
     inner_.report(stage_, done, total);
   }
   bool cancelled() const override { return inner_.cancelled(); }
+  void overall(double fraction) override { inner_.overall(fraction); }
 
  private:
   Progress& inner_;

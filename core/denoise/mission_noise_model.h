@@ -24,7 +24,7 @@
 
 #include "common/progress.h"
 #include "denoise/noise_model.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 
 namespace sonarcarve {
 

@@ -4,8 +4,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.h"
-#include "io/atomic_file.h"
-#include "io/input_file.h"
+#include "io/files/atomic_file.h"
+#include "io/files/input_file.h"
 
 namespace sonarcarve {
 

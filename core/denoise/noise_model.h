@@ -15,7 +15,7 @@
 #include <opencv2/core.hpp>
 
 #include "common/progress.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 
 namespace sonarcarve {
 

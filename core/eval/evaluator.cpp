@@ -16,7 +16,7 @@
 #include "common/quantile.h"
 #include "common/thread_pool.h"
 #include "geometry/internal/vtk_mesh.h"
-#include "io/finite_points.h"
+#include "io/files/finite_points.h"
 
 namespace sonarcarve {
 namespace {

@@ -12,10 +12,10 @@
 #include "common/available_memory.h"
 #include "common/error.h"
 #include "geometry/internal/vtk_mesh.h"
-#include "io/input_file.h"
-#include "io/obj_mesh.h"
-#include "io/point_cloud_ply.h"
-#include "io/stl_check.h"
+#include "io/files/input_file.h"
+#include "io/mesh/obj_mesh.h"
+#include "io/mesh/point_cloud_ply.h"
+#include "io/mesh/stl_check.h"
 
 namespace sonarcarve {
 namespace {

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "io/bag_options.h"
-#include "io/mission.h"
-#include "io/nav_import.h"
+#include "io/mission/mission.h"
+#include "io/mission/nav_import.h"
+#include "io/rosbag/bag_options.h"
 
 namespace sonarcarve {
 

@@ -2,10 +2,10 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "io/files/input_file.h"
 #include "io/frame_source.h"
 #include "io/import.h"
-#include "io/input_file.h"
-#include "io/nav_import.h"
+#include "io/mission/nav_import.h"
 
 namespace sonarcarve {
 namespace {

@@ -9,9 +9,9 @@
 
 #include "common/angles.h"
 #include "common/error.h"
-#include "io/mission_writer.h"
-#include "io/sonar_yaml.h"
-#include "io/yaml_fields.h"
+#include "io/files/yaml_fields.h"
+#include "io/mission/mission_writer.h"
+#include "io/mission/sonar_yaml.h"
 
 namespace sonarcarve {
 namespace {

@@ -17,8 +17,8 @@
 
 #include "common/progress.h"
 #include "io/frame_source.h"
-#include "io/nav_import.h"
-#include "io/oculus_log.h"
+#include "io/mission/nav_import.h"
+#include "io/oculus/oculus_log.h"
 #include "sonar/mounting.h"
 #include "sonar/sonar_model.h"
 

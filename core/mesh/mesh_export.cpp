@@ -4,9 +4,9 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "io/atomic_file.h"
-#include "io/ply_check.h"
-#include "io/point_cloud_ply.h"
+#include "io/files/atomic_file.h"
+#include "io/mesh/ply_check.h"
+#include "io/mesh/point_cloud_ply.h"
 
 namespace sonarcarve {
 namespace {

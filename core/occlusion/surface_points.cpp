@@ -1,6 +1,6 @@
 #include "occlusion/surface_points.h"
 
-#include "io/point_cloud_ply.h"
+#include "io/mesh/point_cloud_ply.h"
 
 namespace sonarcarve {
 

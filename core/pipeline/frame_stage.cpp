@@ -68,21 +68,35 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
                              const DetectorParams& detector, const std::string& given_path,
                              std::shared_ptr<const NoiseModel> given, Progress& progress) {
   NoiseChoice choice;
+  RunChoice& said = choice.choice;
+  said.name = "denoising";
   if (given) {
     choice.model = std::move(given);
     choice.detector = detector.resolved(true);
-    choice.reason = "noise model " + given_path;
+    said.value = std::string(toString(choice.detector.mode)) + " with the noise model given";
+    said.reason = "background noise removed with the empty-water noise model you gave";
+    said.detail = "noise model " + given_path;
     return choice;
   }
   choice.detector = detector.resolved(false);
   const std::vector<std::size_t> indices = indicesOf(frames);
   if (detector.mode == DetectorMode::None) {
-    choice.reason = "no denoising (detector none)" +
-                    speckleLeftIn(mission, indices, detector.smoothing, progress);
+    const std::string speckle = speckleLeftIn(mission, indices, detector.smoothing, progress);
+    said.value = "off";
+    said.detail = "no denoising (detector none)" + speckle;
+    said.warning = !speckle.empty();
+    said.reason = said.warning ? "the frames carry background noise, which carving keeps as "
+                                 "structure without a detector"
+                               : "the parameters turn the detector off";
+    if (said.warning) {
+      said.action = "use the detector auto (the default), or give an empty-water noise model";
+    }
     return choice;
   }
   if (detector.mode != DetectorMode::Auto) {
-    choice.reason = "detector " + std::string(toString(detector.mode)) + ", no noise model";
+    said.value = std::string(toString(detector.mode));
+    said.reason = "the detector the parameters ask for, with no noise model";
+    said.detail = "detector " + std::string(toString(detector.mode)) + ", no noise model";
     return choice;
   }
   MissionNoiseStats stats;
@@ -90,25 +104,34 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
   try {
     learned = learnNoiseFromMission(mission, indices, detector.smoothing, progress, &stats);
   } catch (const Error& e) {
-    choice.reason = "no denoising: " + std::string(e.message());
+    said.value = "off";
+    said.reason = "no noise model was given and none could be learned from the frames";
+    said.detail = "no denoising: " + std::string(e.message());
+    said.action = "give an empty-water noise model (--noise-model), or check the frames";
+    said.warning = true;
     return choice;
   }
   if (!stats.has_background()) {
-    choice.reason = "no denoising: the frames carry no background noise (noise-free)";
+    said.value = "off";
+    said.reason = "the frames carry no background noise";
+    said.detail = "no denoising: the frames carry no background noise (noise-free)";
     return choice;
   }
   choice.model = std::make_shared<const NoiseModel>(std::move(*learned));
   choice.detector = detector.resolved(true);
   char structure[32];
   std::snprintf(structure, sizeof structure, "%.1f", 100.0 * stats.structure_fraction);
-  choice.reason = "noise model learned from " + std::to_string(stats.frames_used) +
-                  " of the mission's own frames (no empty-water model given; " + structure +
-                  " % of pixels held structure in most frames" +
-                  (stats.full_row_bins > 0 ? "; " + std::to_string(stats.full_row_bins) +
-                                                 " range bins held a return across the fan, a "
-                                                 "seabed, scaled out"
-                                           : std::string()) +
-                  ")";
+  said.value = std::string(toString(choice.detector.mode)) + " with a noise model learned";
+  said.reason = "background noise learned from the mission's own frames and removed";
+  said.detail = "noise model learned from " + std::to_string(stats.frames_used) +
+                " of the mission's own frames (no empty-water model given; " + structure +
+                " % of pixels held structure in most frames" +
+                (stats.full_row_bins > 0 ? "; " + std::to_string(stats.full_row_bins) +
+                                               " range bins held a return across the fan, a "
+                                               "seabed, scaled out"
+                                         : std::string()) +
+                ")";
+  said.action = "an empty-water recording's noise model (--noise-model) denoises best";
   return choice;
 }
 
@@ -122,8 +145,9 @@ std::vector<std::size_t> indicesOf(const std::vector<PosedFrame>& frames) {
 
 BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
                                 const std::vector<std::size_t>& indices, Progress& progress) {
+  using Source = BeamWidthChoice::Source;
   if (sonar.horizontalBeamWidth() > 0.0) {
-    return {sonar, ""};
+    return {sonar, Source::Declared, ""};
   }
   const std::size_t count = std::min(indices.size(), kBeamWidthFrames);
   BearingSpectrum spectrum(sonar.cols());
@@ -141,12 +165,12 @@ BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
     progress.report("beam width", k + 1, count);
   }
   if (indices.empty()) {
-    return {sonar,
+    return {sonar, Source::NoFrameRead,
             "the mission gives no horizontal beam width, and no frame is placed in the "
             "navigation to read one from"};
   }
   if (read == 0) {
-    return {sonar,
+    return {sonar, Source::NoFrameRead,
             "the mission gives no horizontal beam width, and no frame could be read for "
             "one"};
   }
@@ -154,11 +178,39 @@ BeamWidthChoice chooseBeamWidth(const Mission& mission, const SonarModel& sonar,
   const std::string frames =
       " from " + std::to_string(read) + (read == 1 ? " frame: " : " frames: ");
   if (!(estimate.width_rad > 0.0)) {
-    return {sonar, "the mission gives no horizontal beam width, and none was read" + frames +
-                       estimate.reason};
+    return {
+        sonar, Source::NotFound,
+        "the mission gives no horizontal beam width, and none was read" + frames + estimate.reason};
   }
-  return {sonar.withHorizontalBeamWidth(estimate.width_rad),
+  return {sonar.withHorizontalBeamWidth(estimate.width_rad), Source::ReadFromFrames,
           "width read" + frames + estimate.reason};
+}
+
+RunChoice bearingDeblurChoice(const BeamWidthChoice& beams, const DenoisedFrames& frames) {
+  using Source = BeamWidthChoice::Source;
+  RunChoice choice;
+  choice.name = "bearing deblur";
+  choice.value = frames.deblurs() ? "on" : "off";
+  if (beams.sonar.horizontalBeamWidth() > 0.0) {
+    choice.detail = frames.bearingDeblur() + (beams.reason.empty() ? "" : "; " + beams.reason);
+    const std::string width = beams.source == Source::ReadFromFrames
+                                  ? "their width read from the frames"
+                                  : "the width the sonar or the parameters give";
+    choice.reason = frames.deblurs()
+                        ? "the beams' blur across bearing taken out, with " + width
+                        : "the beams are too narrow to blur across bearing (" + width + ")";
+    return choice;
+  }
+  choice.detail = "off: " + beams.reason;
+  if (beams.source == Source::NotFound) {
+    choice.reason = "the frames show no blur across bearing to take out";
+  } else {
+    choice.reason = "the beams' width is unknown and no frame could be read for it";
+  }
+  choice.action =
+      "give the sonar's horizontal beam width (horizontal_beam_width_deg) if its beams are "
+      "wider than their spacing";
+  return choice;
 }
 
 cv::Mat denoiseFrame(const Detector& detector, const BearingDeblur& deblur, const cv::Mat& image) {

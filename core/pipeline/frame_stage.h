@@ -10,7 +10,8 @@
 #include "carve/seabed_model.h"
 #include "common/progress.h"
 #include "denoise/detector.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
+#include "pipeline/run_choice.h"
 #include "sonar/bearing_deblur.h"
 
 namespace sonarcarve {
@@ -35,11 +36,11 @@ std::vector<std::size_t> selectFrames(std::size_t count, const FrameSelection& s
 std::vector<PosedFrame> placeFrames(const Mission& mission, const FrameSelection& selection,
                                     const std::function<void(const FrameProblem&)>& skip);
 
-/// The noise model the denoise stage uses, and why, in words for reports and the GUI.
+/// The noise model the denoise stage uses, and why (the run's choice "denoising").
 struct NoiseChoice {
   std::shared_ptr<const NoiseModel> model;  ///< null: none
   DetectorParams detector;                  ///< `auto` made concrete
-  std::string reason;
+  RunChoice choice;
 };
 
 /// Chooses the noise model: the file `noise_model` when given; for the `auto` detector
@@ -53,10 +54,18 @@ NoiseChoice chooseNoiseModel(const Mission& mission, const std::vector<PosedFram
                              std::shared_ptr<const NoiseModel> given, Progress& progress);
 
 /// The sonar whose beams' blur across bearing is taken out of the frames, and why.
+class DenoisedFrames;
+
 struct BeamWidthChoice {
+  enum class Source { Declared, ReadFromFrames, NotFound, NoFrameRead };
   SonarModel sonar;
+  Source source = Source::Declared;
   std::string reason;  ///< empty when the sonar declares its width (or an analyst gave one)
 };
+
+/// The run's choice "bearing deblur": whether the frames' blur across bearing is taken out,
+/// with the beams' width `beams` gives, as `frames` does it.
+RunChoice bearingDeblurChoice(const BeamWidthChoice& beams, const DenoisedFrames& frames);
 
 /// Frames read for the beams' width.
 inline constexpr std::size_t kBeamWidthFrames = 24;
@@ -88,6 +97,8 @@ class DenoisedFrames {
   const Detector& detector() const { return *detector_; }
   /// Whether and how the frames' blur across bearing is taken out, in words.
   std::string bearingDeblur() const;
+  /// Whether the frames' blur across bearing is taken out at all.
+  bool deblurs() const { return deblur_.active(); }
 
  private:
   const Mission& mission_;

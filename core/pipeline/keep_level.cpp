@@ -31,6 +31,23 @@ std::string describeKeepLevel(const KeepLevel& level, double dynamic_range_db) {
   return line.str();
 }
 
+RunChoice keepLevelChoice(const KeepLevel& level, double dynamic_range_db) {
+  std::ostringstream value;
+  value << dynamic_range_db << " dB under the brightest";
+  RunChoice choice;
+  choice.name = "beam-aware carving";
+  choice.value = level.raised_to_a_count ? "raised to a dark pixel's level" : value.str();
+  choice.reason = level.raised_to_a_count
+                      ? "the returns are too faint for the dynamic range in whole counts, so "
+                        "fainter pixels carve"
+                      : "fainter pixels cannot place a return in elevation, so they carve";
+  choice.detail = describeKeepLevel(level, dynamic_range_db);
+  if (level.raised_to_a_count) {
+    choice.action = "a higher gain when recording keeps fainter structure";
+  }
+  return choice;
+}
+
 KeepLevel measureKeepLevel(std::size_t count,
                            const std::function<std::optional<cv::Mat>(std::size_t)>& image,
                            double dynamic_range_db, Progress& progress) {

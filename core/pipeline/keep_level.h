@@ -13,6 +13,7 @@
 
 #include "common/progress.h"
 #include "pipeline/frame_stage.h"
+#include "pipeline/run_choice.h"
 
 namespace sonarcarve {
 
@@ -28,8 +29,11 @@ struct KeepLevel {
   std::string unit = "counts";
 };
 
-/// One line for the terminal and the workbench's log: the level, and why.
+/// The level and how it was derived, for an expert.
 std::string describeKeepLevel(const KeepLevel& level, double dynamic_range_db);
+
+/// The run's choice "beam-aware carving": the level and why, for an analyst.
+RunChoice keepLevelChoice(const KeepLevel& level, double dynamic_range_db);
 
 /// Measured on the `count` images `image(n)` gives (CV_32F, after the detector; nullopt: left
 /// out). Level 0 when no pixel is lit. Cancellable (throws Cancelled).

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "carve/voxel_map.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "sonar/frame.h"
 
 namespace sonarcarve {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/yaml_fields.h"
+#include "io/files/yaml_fields.h"
 #include "pipeline/param_schema.h"
 
 namespace sonarcarve {

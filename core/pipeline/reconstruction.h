@@ -1,9 +1,8 @@
-// The one orchestrator of a reconstruction, as named stages (docs/architecture.md):
-//   read (select and place frames) -> denoise -> carve -> occlusion -> surface -> mesh -> report
-// with progress, cancellation (checked between frames and inside long loops) and map updates
-// for viewers (pipeline/map_updates.h). The GUI and the CLI both run a Pipeline; neither
-// re-implements a step. Each stage is a unit of its own (frame_stage, carve_stage,
-// surface_stage, report) with its own parameters and tests.
+// The one orchestrator of a reconstruction: a loop over uniform stages (pipeline/stage.h,
+// pipeline/stages/), read -> denoise -> choose -> carve -> surface -> mesh, then report ->
+// export for a run that writes a folder, with progress, cancellation (checked between frames
+// and inside long loops), memory checks and map updates for viewers (pipeline/map_updates.h).
+// The GUI and the CLI both run a Pipeline; neither re-implements a step.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -14,13 +13,16 @@
 #include "carve/occupancy_store.h"
 #include "carve/voxel_map.h"
 #include "common/progress.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "mesh/surface_mesher.h"
 #include "occlusion/surface_points.h"
 #include "pipeline/carve_stage.h"
 #include "pipeline/keep_level.h"
 #include "pipeline/map_updates.h"
 #include "pipeline/reconstruction_params.h"
+#include "pipeline/run_choice.h"
+#include "pipeline/stage.h"
+#include "pipeline/stages/standard_stages.h"
 
 namespace sonarcarve {
 
@@ -40,12 +42,10 @@ struct ReconstructionResult {
   std::string temporary_file_problem;
   OccupancyStore occupancy;  ///< an evicting run's .bt export blocks
   std::size_t frames_used = 0;
-  std::string detector;        ///< the detector that ran (`auto` made concrete)
-  std::string denoising;       ///< which noise model it used and why, in words
-  std::string shadow_carving;  ///< whether frames carved shadow-aware and why, in words
-  std::string seabed_carving;  ///< seabed-aware carving: off and why, or in how many frames
-  std::string bearing_deblur;  ///< whether the beams' blur across bearing was taken out, in words
-  KeepLevel keep_level;        ///< beam-aware carving's keep level (level 0 when not beam-aware)
+  std::string detector;  ///< the detector that ran (`auto` made concrete)
+  /// The run's automatic decisions, in the order made (pipeline/run_choice.h).
+  std::vector<RunChoice> choices;
+  KeepLevel keep_level;  ///< beam-aware carving's keep level (level 0 when not beam-aware)
   /// Pose refinement of each carved frame (empty when it is off).
   std::vector<FramePoseRefinement> refinement;
   std::vector<FrameProblem> skipped;
@@ -55,6 +55,7 @@ struct ReconstructionResult {
   double carve_ms_median = 0.0;     ///< per frame
   double occlusion_ms_per_frame = 0.0;
   double total_s = 0.0;
+  std::string report;  ///< report.json's text, for a run that writes its outputs
 };
 
 class Pipeline {
@@ -82,6 +83,12 @@ class Pipeline {
   }
   /// Keeps the whole carved map to the end (reconstruct --save-map writes it): no eviction.
   void keepWholeMap() { keep_whole_map_ = true; }
+  /// Adds a stage after the one named `after` (at the end when empty or not found).
+  void addStage(std::shared_ptr<const Stage> stage, std::string_view after = {});
+  /// The run composes its report and writes its outputs into `settings.folder`, last.
+  void writeOutputsTo(OutputSettings settings);
+  /// The stages' names, in the order they run.
+  std::vector<std::string> stageNames() const;
   /// Whether a run without a map viewer lets finished blocks go (evict_blocks, and nothing
   /// that needs the whole map).
   bool evicts() const;
@@ -95,6 +102,7 @@ class Pipeline {
   bool carve_frames_ = true;
   bool keep_whole_map_ = false;
   ThreadPool& pool_;
+  std::vector<std::shared_ptr<const Stage>> stages_;
 };
 
 /// The sonar a run carves with: the mission's, with the parameters' vertical aperture and

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "io/yaml_fields.h"
+#include "io/files/yaml_fields.h"
 #include "pipeline/param_schema.h"
 
 namespace sonarcarve {

@@ -8,7 +8,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
-#include "io/nav_csv.h"
+#include "io/mission/nav_csv.h"
 
 namespace sonarcarve {
 namespace {

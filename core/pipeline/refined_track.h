@@ -5,7 +5,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <vector>
 
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "pipeline/carve_stage.h"
 
 namespace sonarcarve {

@@ -16,10 +16,6 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
   nlohmann::json report = {{"mission", mission.folder.string()},
                            {"engine", std::string(toString(params.engine))},
                            {"detector", result.detector},
-                           {"denoising", result.denoising},
-                           {"shadow_aware_carving", result.shadow_carving},
-                           {"seabed_aware_carving", result.seabed_carving},
-                           {"bearing_deblur", result.bearing_deblur},
                            {"smoothing", params.detector.smoothing},
                            {"z", params.detector.z},
                            {"frames_used", result.frames_used},
@@ -33,6 +29,16 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                            {"carve_ms_per_frame_median", result.carve_ms_median},
                            {"occlusion_ms_per_frame", result.occlusion_ms_per_frame},
                            {"total_s", result.total_s}};
+  nlohmann::json choices = nlohmann::json::array();
+  for (const RunChoice& c : result.choices) {
+    choices.push_back({{"name", c.name},
+                       {"value", c.value},
+                       {"reason", c.reason},
+                       {"detail", c.detail},
+                       {"action", c.action},
+                       {"warning", c.warning}});
+  }
+  report["choices"] = std::move(choices);
   if (result.evicted) {
     report["eviction"] = {{"pages_freed_early", result.pages_freed_early},
                           {"pages_set_aside", result.pages_set_aside},
@@ -74,24 +80,6 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
     }
   }
   return report.dump(2) + "\n";
-}
-
-std::vector<std::string> describeRunChoices(const ReconstructionResult& result,
-                                            double dynamic_range_db) {
-  std::vector<std::string> lines{"denoising: " + result.detector + ", " + result.denoising};
-  if (!result.shadow_carving.empty()) {
-    lines.push_back("shadow-aware carving: " + result.shadow_carving);
-  }
-  if (!result.seabed_carving.empty()) {
-    lines.push_back("seabed-aware carving: " + result.seabed_carving);
-  }
-  if (!result.bearing_deblur.empty()) {
-    lines.push_back("bearing deblur: " + result.bearing_deblur);
-  }
-  if (result.keep_level.frames > 0) {
-    lines.push_back(describeKeepLevel(result.keep_level, dynamic_range_db));
-  }
-  return lines;
 }
 
 }  // namespace sonarcarve

@@ -15,9 +15,4 @@ namespace sonarcarve {
 std::string reconstructionReport(const Mission& mission, const ReconstructionParams& params,
                                  const ReconstructionResult& result, ThreadPool& pool);
 
-/// What the run chose and why, a line each, for the terminal and the workbench's log: the
-/// denoising, shadow-aware carving (fast engine) and the keep level (beam-aware carving).
-std::vector<std::string> describeRunChoices(const ReconstructionResult& result,
-                                            double dynamic_range_db);
-
 }  // namespace sonarcarve

@@ -30,19 +30,28 @@ double headingSpreadDeg(const std::vector<PosedFrame>& frames) {
 }
 
 ShadowCarvingChoice chooseShadowCarving(ShadowCarving mode, const std::vector<PosedFrame>& frames) {
-  if (mode == ShadowCarving::On) {
-    return {true, "on (shadow_aware_carving: true)"};
-  }
-  if (mode == ShadowCarving::Off) {
-    return {false, "off (shadow_aware_carving: false)"};
+  ShadowCarvingChoice result;
+  RunChoice& choice = result.choice;
+  choice.name = "shadow-aware carving";
+  if (mode != ShadowCarving::Auto) {
+    result.on = mode == ShadowCarving::On;
+    choice.value = result.on ? "on" : "off";
+    choice.reason = "as the parameters set it";
+    choice.detail =
+        choice.value + " (shadow_aware_carving: " + (result.on ? "true" : "false") + ")";
+    return result;
   }
   const double spread = headingSpreadDeg(frames);
-  std::ostringstream reason;
-  reason.precision(3);
-  const bool on = spread > kMultiAspectHeadingSpread_deg;
-  reason << (on ? "on" : "off") << " (auto: the views' headings span " << spread << " degrees, "
-         << (on ? "over " : "not over ") << kMultiAspectHeadingSpread_deg << ")";
-  return {on, reason.str()};
+  std::ostringstream detail;
+  detail.precision(3);
+  result.on = spread > kMultiAspectHeadingSpread_deg;
+  choice.value = result.on ? "on" : "off";
+  detail << choice.value << " (auto: the views' headings span " << spread << " degrees, "
+         << (result.on ? "over " : "not over ") << kMultiAspectHeadingSpread_deg << ")";
+  choice.detail = detail.str();
+  choice.reason = result.on ? "the mission views the structure from several sides"
+                            : "the mission views the structure from one side";
+  return result;
 }
 
 }  // namespace sonarcarve

@@ -8,6 +8,7 @@
 
 #include "pipeline/frame_stage.h"
 #include "pipeline/reconstruction_params.h"
+#include "pipeline/run_choice.h"
 
 namespace sonarcarve {
 
@@ -25,7 +26,7 @@ double headingSpreadDeg(const std::vector<PosedFrame>& frames);
 
 struct ShadowCarvingChoice {
   bool on = false;
-  std::string reason;  ///< in words, for the report and the log
+  RunChoice choice;  ///< the run's choice "shadow-aware carving"
 };
 
 ShadowCarvingChoice chooseShadowCarving(ShadowCarving mode, const std::vector<PosedFrame>& frames);

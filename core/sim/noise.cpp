@@ -8,7 +8,7 @@
 #include <string>
 
 #include "common/error.h"
-#include "io/yaml_fields.h"
+#include "io/files/yaml_fields.h"
 #include "sonar/beam_pattern.h"
 
 namespace sonarcarve {

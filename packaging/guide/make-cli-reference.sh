@@ -36,5 +36,5 @@ for verb in $verbs; do
 done
 printf '\n## sonarcarve\n\nThe workbench ([workflow](workflow.md), [the window](../workbench.md)).\n'
 printf 'Qt'"'"'s own options (`-platform`, `-style`, …) are listed by `--help-all`.\n\n'
-printf '```text\n%s\n```\n' "$(QT_QPA_PLATFORM=offscreen "$gui" --help 2>/dev/null |
+printf '```text\n%s\n```\n' "$("$gui" --help 2>/dev/null |
   sed 's|^Usage: .*/sonarcarve |Usage: sonarcarve |')"

@@ -4,7 +4,7 @@
 #include <random>
 
 #include "common/angles.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "sonar/sonar_model.h"
 
 namespace sonarcarve {

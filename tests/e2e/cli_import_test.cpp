@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/angles.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "sonar/attitude.h"
 #include "support/cli_runner.h"
 #include "support/oculus_encoder.h"

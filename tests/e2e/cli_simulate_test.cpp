@@ -8,8 +8,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "common/angles.h"
-#include "io/mission.h"
-#include "io/nav_csv.h"
+#include "io/mission/mission.h"
+#include "io/mission/nav_csv.h"
 #include "pipeline/frame_stage.h"
 #include "sonar/bearing_deblur.h"
 #include "support/cli_runner.h"
@@ -130,7 +130,7 @@ TEST(CliSimulate, DecibelFramesHoldTheirLinearTwinsPowerWithinHalfAByte) {
       << info.output;
   // A run's keep level is power read from the bytes, and says so; a linear sonar's, counts.
   for (const std::string scale : {"linear", "decibel"}) {
-    const auto run = runCli("reconstruct " + quoted(dir.path() / scale) + " --out " +
+    const auto run = runCli("reconstruct " + quoted(dir.path() / scale) + " --verbose --out " +
                             quoted(dir.path() / (scale + "_run")));
     ASSERT_EQ(run.exit_code, 0) << run.output;
     const std::string unit = scale == "linear" ? "counts" : "power";

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "io/point_cloud_ply.h"
+#include "io/mesh/point_cloud_ply.h"
 #include "support/cli_runner.h"
 #include "support/test_support.h"
 

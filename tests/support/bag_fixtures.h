@@ -1,6 +1,6 @@
 // Missions in memory for the ROS 2 bag tests: a small sonar with a non-uniform bearing table,
 // frames of known values, a moving and turning vehicle and a tilted mounting, so that a bag
-// written by io/bag_writer.h and read back can be compared sample for sample.
+// written by io/rosbag/bag_writer.h and read back can be compared sample for sample.
 #pragma once
 
 #include <functional>

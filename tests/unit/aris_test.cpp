@@ -6,11 +6,11 @@
 
 #include "common/angles.h"
 #include "common/error.h"
-#include "io/aris_file.h"
-#include "io/frame_png.h"
+#include "io/aris/aris_file.h"
+#include "io/files/frame_png.h"
 #include "io/frame_source.h"
 #include "io/import.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

@@ -5,12 +5,12 @@
 // is skipped and reported by bag, topic and message, the others read.
 #include <gtest/gtest.h>
 
-#include "io/bag_oculus.h"
-#include "io/bag_writer.h"
-#include "io/cdr.h"
 #include "io/frame_source.h"
 #include "io/import.h"
-#include "io/oculus_log.h"
+#include "io/oculus/oculus_log.h"
+#include "io/rosbag/bag_oculus.h"
+#include "io/rosbag/bag_writer.h"
+#include "io/rosbag/cdr.h"
 #include "support/oculus_encoder.h"
 #include "support/test_support.h"
 

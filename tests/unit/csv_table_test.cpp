@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "io/csv_table.h"
+#include "io/files/csv_table.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

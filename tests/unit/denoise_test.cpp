@@ -10,7 +10,7 @@
 #include "common/error.h"
 #include "denoise/detector.h"
 #include "denoise/noise_model.h"
-#include "io/mission_writer.h"
+#include "io/mission/mission_writer.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

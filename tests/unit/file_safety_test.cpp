@@ -1,5 +1,6 @@
-// The two file primitives every reader and writer goes through: io/input_file.h (only regular
-// files are read) and io/atomic_file.h (a write either completes or leaves the previous file).
+// The two file primitives every reader and writer goes through: io/files/input_file.h (only regular
+// files are read) and io/files/atomic_file.h (a write either completes or leaves the previous
+// file).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -11,8 +12,8 @@
 #include <thread>
 
 #include "common/error.h"
-#include "io/atomic_file.h"
-#include "io/input_file.h"
+#include "io/files/atomic_file.h"
+#include "io/files/input_file.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
-#include "io/mcap_format.h"
-#include "io/ros_bag.h"
+#include "io/rosbag/mcap_format.h"
+#include "io/rosbag/ros_bag.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

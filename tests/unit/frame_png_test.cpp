@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "io/atomic_file.h"
-#include "io/frame_png.h"
+#include "io/files/atomic_file.h"
+#include "io/files/frame_png.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

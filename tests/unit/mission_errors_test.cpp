@@ -6,7 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "common/error.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

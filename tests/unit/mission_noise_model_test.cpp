@@ -102,8 +102,9 @@ TEST_F(MissionNoise, AutoLearnsFromTheMissionAndNeverChoosesNoneOnSpeckle) {
   const NoiseChoice choice = chooseNoiseModel(riser, frames, detector, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::ZTest);
   ASSERT_TRUE(choice.model);
-  EXPECT_NE(choice.reason.find("learned from 24 of the mission's own frames"), std::string::npos)
-      << choice.reason;
+  EXPECT_NE(choice.choice.detail.find("learned from 24 of the mission's own frames"),
+            std::string::npos)
+      << choice.choice.detail;
 }
 
 // An analyst may turn the detector off: the run does as asked, and says that the frames carry
@@ -119,9 +120,9 @@ TEST_F(MissionNoise, DetectorNoneOnSpeckleWarns) {
       chooseNoiseModel(mission("riser"), frames, none, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::None);
   EXPECT_FALSE(choice.model);
-  EXPECT_NE(choice.reason.find("warning: 8 frames checked carry background noise"),
+  EXPECT_NE(choice.choice.detail.find("warning: 8 frames checked carry background noise"),
             std::string::npos)
-      << choice.reason;
+      << choice.choice.detail;
 }
 
 TEST_F(MissionNoise, TooFewFramesGiveNoDenoisingAndSayWhy) {
@@ -131,8 +132,8 @@ TEST_F(MissionNoise, TooFewFramesGiveNoDenoisingAndSayWhy) {
   const NoiseChoice choice =
       chooseNoiseModel(mission("riser"), two, DetectorParams{}, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::None);
-  EXPECT_NE(choice.reason.find("at least 3"), std::string::npos) << choice.reason;
-  EXPECT_NE(choice.reason.find("--noise-model"), std::string::npos) << choice.reason;
+  EXPECT_NE(choice.choice.detail.find("at least 3"), std::string::npos) << choice.choice.detail;
+  EXPECT_NE(choice.choice.detail.find("--noise-model"), std::string::npos) << choice.choice.detail;
 }
 
 TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
@@ -149,11 +150,11 @@ TEST(MissionNoiseFree, NoiseFreeFramesAreNotDenoisedAndSaySo) {
   const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", nullptr, progress);
   EXPECT_EQ(choice.detector.mode, DetectorMode::None);
   EXPECT_FALSE(choice.model);
-  EXPECT_NE(choice.reason.find("noise-free"), std::string::npos) << choice.reason;
+  EXPECT_NE(choice.choice.detail.find("noise-free"), std::string::npos) << choice.choice.detail;
   DetectorParams none;
   none.mode = DetectorMode::None;
   const NoiseChoice off = chooseNoiseModel(m, frames, none, "", nullptr, progress);
-  EXPECT_EQ(off.reason, "no denoising (detector none)");  // nothing to warn of
+  EXPECT_EQ(off.choice.detail, "no denoising (detector none)");  // nothing to warn of
 }
 
 // A pitched-down survey of the seabed on the realistic beam: the seabed lights most pixels of
@@ -186,10 +187,10 @@ TEST(MissionNoiseFree, ASeabedInEveryFrameIsNotTakenForNoise) {
   for (const std::size_t i : indices)
     frames.push_back({i, Eigen::Isometry3d::Identity()});
   const NoiseChoice choice = chooseNoiseModel(m, frames, DetectorParams{}, "", nullptr, progress);
-  EXPECT_EQ(choice.detector.mode, DetectorMode::None) << choice.reason;
+  EXPECT_EQ(choice.detector.mode, DetectorMode::None) << choice.choice.detail;
   DetectorParams none;  // the detector turned off: no speckle to warn of either
   none.mode = DetectorMode::None;
-  EXPECT_EQ(chooseNoiseModel(m, frames, none, "", nullptr, progress).reason,
+  EXPECT_EQ(chooseNoiseModel(m, frames, none, "", nullptr, progress).choice.detail,
             "no denoising (detector none)");
 }
 

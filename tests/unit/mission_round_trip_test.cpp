@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
 #include "common/angles.h"
-#include "io/mission.h"
-#include "io/mission_writer.h"
+#include "io/mission/mission.h"
+#include "io/mission/mission_writer.h"
 #include "sonar/attitude.h"
 #include "support/test_support.h"
 

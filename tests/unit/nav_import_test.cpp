@@ -6,7 +6,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
-#include "io/nav_import.h"
+#include "io/mission/nav_import.h"
 #include "sonar/attitude.h"
 #include "support/test_support.h"
 

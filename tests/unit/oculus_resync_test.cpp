@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "common/error.h"
-#include "io/oculus_log.h"
-#include "io/oculus_message.h"
+#include "io/oculus/oculus_log.h"
+#include "io/oculus/oculus_message.h"
 #include "support/oculus_encoder.h"
 #include "support/test_support.h"
 

@@ -11,9 +11,9 @@
 #include "common/error.h"
 #include "io/frame_source.h"
 #include "io/import.h"
-#include "io/mission.h"
-#include "io/oculus_log.h"
-#include "io/oculus_message.h"
+#include "io/mission/mission.h"
+#include "io/oculus/oculus_log.h"
+#include "io/oculus/oculus_message.h"
 #include "support/oculus_encoder.h"
 #include "support/test_support.h"
 

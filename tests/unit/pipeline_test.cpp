@@ -232,14 +232,19 @@ TEST_F(Pipeline, BeamWidthOverrideTakesTheBeamsBlurOut) {
   wide.horizontal_beam_width_rad = degToRad(3.0);
   const ReconstructionResult r_own = runPipeline(m, own, progress);
   const ReconstructionResult r_wide = runPipeline(m, wide, progress);
-  EXPECT_EQ(r_own.bearing_deblur.rfind("off: the mission gives no horizontal beam width, and none "
-                                       "was read from",
-                                       0),
+  const RunChoice* own_deblur = findChoice(r_own.choices, "bearing deblur");
+  const RunChoice* wide_deblur = findChoice(r_wide.choices, "bearing deblur");
+  ASSERT_TRUE(own_deblur && wide_deblur);
+  EXPECT_EQ(own_deblur->value, "off");
+  EXPECT_EQ(own_deblur->detail.rfind("off: the mission gives no horizontal beam width, and none "
+                                     "was read from",
+                                     0),
             0u)
-      << r_own.bearing_deblur;
-  EXPECT_NE(r_wide.bearing_deblur.find("3.00 degree beams"), std::string::npos)
-      << r_wide.bearing_deblur;
-  EXPECT_NE(r_wide.bearing_deblur.find("taken out"), std::string::npos) << r_wide.bearing_deblur;
+      << own_deblur->detail;
+  EXPECT_EQ(wide_deblur->value, "on");
+  EXPECT_NE(wide_deblur->detail.find("3.00 degree beams"), std::string::npos)
+      << wide_deblur->detail;
+  EXPECT_NE(wide_deblur->reason.find("taken out"), std::string::npos) << wide_deblur->reason;
   EXPECT_NE(r_wide.occupied_voxels, r_own.occupied_voxels);
 }
 

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "common/error.h"
-#include "io/png_codec.h"
+#include "io/files/png_codec.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

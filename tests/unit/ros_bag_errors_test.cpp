@@ -7,11 +7,11 @@
 
 #include <fstream>
 
-#include "io/bag_writer.h"
 #include "io/frame_source.h"
-#include "io/mcap_writer.h"
-#include "io/ros_bag.h"
-#include "io/ros_messages.h"
+#include "io/rosbag/bag_writer.h"
+#include "io/rosbag/mcap_writer.h"
+#include "io/rosbag/ros_bag.h"
+#include "io/rosbag/ros_messages.h"
 #include "support/bag_fixtures.h"
 #include "support/test_support.h"
 

@@ -10,15 +10,15 @@
 #include <cstring>
 
 #include "common/angles.h"
-#include "io/bag_navigation.h"
-#include "io/bag_sonar.h"
-#include "io/bag_writer.h"
-#include "io/cdr.h"
 #include "io/frame_source.h"
-#include "io/mcap_writer.h"
-#include "io/ros_bag.h"
-#include "io/ros_frames.h"
-#include "io/ros_messages.h"
+#include "io/rosbag/bag_navigation.h"
+#include "io/rosbag/bag_sonar.h"
+#include "io/rosbag/bag_writer.h"
+#include "io/rosbag/cdr.h"
+#include "io/rosbag/mcap_writer.h"
+#include "io/rosbag/ros_bag.h"
+#include "io/rosbag/ros_frames.h"
+#include "io/rosbag/ros_messages.h"
 #include "support/bag_fixtures.h"
 #include "support/test_support.h"
 

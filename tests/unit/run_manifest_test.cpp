@@ -1,11 +1,11 @@
-// The run manifest of an output folder (io/run_manifest.h): what it records, and that the
+// The run manifest of an output folder (io/run/run_manifest.h): what it records, and that the
 // files of an earlier run that this run did not rewrite are gone when it ends, complete or not.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "io/run_manifest.h"
+#include "io/run/run_manifest.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

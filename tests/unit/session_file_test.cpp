@@ -1,8 +1,8 @@
 // Sessions are recognised by what they say they are, not by their name.
 #include <gtest/gtest.h>
 
-#include "io/session_file.h"
 #include "pipeline/param_diff.h"
+#include "session/session_file.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

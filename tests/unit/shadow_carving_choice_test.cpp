@@ -47,7 +47,7 @@ TEST(ShadowCarvingChoice, AutoIsOnForSeveralSidesAndOffAlongOnePass) {
   const std::vector<PosedFrame> two_sides{looking(0), looking(90)};
   EXPECT_FALSE(chooseShadowCarving(ShadowCarving::Auto, one_pass).on);
   EXPECT_TRUE(chooseShadowCarving(ShadowCarving::Auto, two_sides).on);
-  EXPECT_NE(chooseShadowCarving(ShadowCarving::Auto, two_sides).reason.find("90 degrees"),
+  EXPECT_NE(chooseShadowCarving(ShadowCarving::Auto, two_sides).choice.detail.find("90 degrees"),
             std::string::npos);
   // The user's choice stands either way.
   EXPECT_TRUE(chooseShadowCarving(ShadowCarving::On, one_pass).on);

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "common/angles.h"
-#include "io/frame_png.h"
+#include "io/files/frame_png.h"
 #include "sim/demo_scenes.h"
 #include "sim/ray_caster.h"
 #include "sim/simulation_run.h"

@@ -3,7 +3,7 @@
 
 #include "common/error.h"
 #include "geometry/scene_io.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
 #include "sim/demo_scenes.h"
 #include "sim/simulation_run.h"
 #include "support/test_support.h"

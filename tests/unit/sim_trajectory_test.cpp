@@ -5,7 +5,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
-#include "io/nav_csv.h"
+#include "io/mission/nav_csv.h"
 #include "sim/trajectory.h"
 #include "sonar/attitude.h"
 #include "support/test_support.h"

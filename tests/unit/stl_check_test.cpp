@@ -1,10 +1,10 @@
-// STL files checked before VTK reads them (io/stl_check.h): a binary STL cut short, one shorter
-// than its header, an ASCII STL without its end; whole files pass.
+// STL files checked before VTK reads them (io/mesh/stl_check.h): a binary STL cut short, one
+// shorter than its header, an ASCII STL without its end; whole files pass.
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "io/stl_check.h"
+#include "io/mesh/stl_check.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {

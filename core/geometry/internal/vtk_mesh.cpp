@@ -8,7 +8,7 @@
 #include <vtkTriangleFilter.h>
 
 #include "common/error.h"
-#include "io/finite_points.h"
+#include "io/files/finite_points.h"
 
 namespace sonarcarve {
 

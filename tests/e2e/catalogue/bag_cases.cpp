@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "e2e/catalogue/catalogue.h"
-#include "io/bag_writer.h"
-#include "io/mission.h"
+#include "io/mission/mission.h"
+#include "io/rosbag/bag_writer.h"
 
 namespace sonarcarve::test {
 namespace {

@@ -1,0 +1,51 @@
+// choose: the carving rules the mission calls for. Shadow-aware carving where the views look
+// at the scene from several sides (fast engine); beam-aware carving's keep level, measured on
+// the mission's own denoised frames, and what a dark pixel means after the detector.
+#include "pipeline/keep_level.h"
+#include "pipeline/run_context.h"
+#include "pipeline/shadow_carving.h"
+#include "pipeline/stages/standard_stages.h"
+
+namespace sonarcarve {
+namespace {
+
+class ChooseStage : public Stage {
+ public:
+  ChooseStage() : Stage("choose", 0.05) {}
+
+  void run(RunContext& run, Progress& progress) const override {
+    CarveParams& carve = run.carving.carve;
+    if (run.params.engine == Engine::Fast) {
+      const ShadowCarvingChoice shadow =
+          chooseShadowCarving(run.params.shadow_aware_carving, run.posed);
+      carve.shadow_aware = shadow.on;
+      run.choose(shadow.choice);
+    }
+    // A run that only resolves a loaded map's surface reads no frame for the keep level.
+    if (!carvesMainLobe(run.sonar, carve) || !run.carve_frames) {
+      return;
+    }
+    KeepLevel& level = run.result.keep_level;
+    level = measureKeepLevel(*run.frames, run.posed, carve.dynamic_range_db, progress);
+    carve.keep_level = level.level;
+    level.unit = run.sonar.intensityScale().isLinear() ? "counts" : "power";
+    carve.dark_pixels = darkPixelsAreExact(run.noise.detector)
+                            ? CarveParams::DarkPixels::Exact
+                            : CarveParams::DarkPixels::BelowDetection;
+    carve.dark_pixel_level = run.sonar.intensityScale().darkPower();
+    const double used = effectiveKeepLevel(carve);
+    level.raised_to_a_count = used > carve.keep_level;
+    level.level = carve.keep_level = used;
+    if (level.frames > 0) {
+      run.choose(keepLevelChoice(level, carve.dynamic_range_db));
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeChooseStage() {
+  return std::make_unique<ChooseStage>();
+}
+
+}  // namespace sonarcarve

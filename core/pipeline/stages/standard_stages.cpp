@@ -1,0 +1,10 @@
+#include "pipeline/stages/standard_stages.h"
+
+namespace sonarcarve {
+
+std::vector<std::shared_ptr<const Stage>> standardStages() {
+  return {makeReadStage(),  makeDenoiseStage(), makeChooseStage(),
+          makeCarveStage(), makeSurfaceStage(), makeMeshStage()};
+}
+
+}  // namespace sonarcarve
