@@ -30,6 +30,7 @@
 #include <QToolBar>
 #include <QUrl>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "accuracy_panel.h"
 #include "carve/occupancy_export.h"
@@ -190,8 +191,8 @@ void MainWindow::buildDocks() {
   tabifyDockWidget(accuracy_dock,
                    dock(tr("Run history"), "history", history_panel_, Qt::BottomDockWidgetArea));
   choices_panel_ = new widgets::RunChoicesPanel;
-  tabifyDockWidget(accuracy_dock,
-                   dock(tr("Choices"), "choices", choices_panel_, Qt::BottomDockWidgetArea));
+  choices_dock_ = dock(tr("Choices"), "choices", choices_panel_, Qt::BottomDockWidgetArea);
+  tabifyDockWidget(accuracy_dock, choices_dock_);
   accuracy_dock->raise();
   connect(history_panel_, &widgets::RunHistoryPanel::goBackRequested, this,
           &MainWindow::goBackToRun);
@@ -482,6 +483,11 @@ void MainWindow::wireRunner() {
               log(QString::fromStdString(choiceLine(choice)));
             }
             choices_panel_->setChoices(result->choices);
+            // A choice that may harm the map is shown, not left behind a tab.
+            if (std::any_of(result->choices.begin(), result->choices.end(),
+                            [](const RunChoice& c) { return c.warning; })) {
+              choices_dock_->raise();
+            }
             log(summary);
             progress_label_->setText(summary);
             updateRunActions();

@@ -30,6 +30,7 @@
 
 class QAction;
 class QComboBox;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QPlainTextEdit;
@@ -188,6 +189,7 @@ class MainWindow : public QMainWindow {
   widgets::ParamsPanel* params_panel_ = nullptr;
   widgets::AccuracyPanel* accuracy_panel_ = nullptr;
   widgets::RunChoicesPanel* choices_panel_ = nullptr;
+  QDockWidget* choices_dock_ = nullptr;
   widgets::RunHistoryPanel* history_panel_ = nullptr;
   QPlainTextEdit* log_ = nullptr;
   QProgressBar* progress_bar_ = nullptr;

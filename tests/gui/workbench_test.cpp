@@ -2,6 +2,7 @@
 // end and get the CLI's map; pause, cancel and carry on; a parameter change supersedes the
 // running job; a broken mission gives a message and the window stays usable; sessions and
 // exports round-trip.
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -9,6 +10,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTreeWidget>
 #include <QtTest>
 #include <functional>
 #include <set>
@@ -25,6 +27,7 @@
 #include "occlusion/surface_points.h"
 #include "params_panel.h"
 #include "pipeline/reconstruction.h"
+#include "run_choices_panel.h"
 #include "run_history_panel.h"
 #include "session/session_file.h"
 #include "sim/demo_scenes.h"
@@ -126,6 +129,27 @@ class WorkbenchTest : public QObject {
     QVERIFY(pointSet(gui.positions) == pointSet(cli.positions));
     QVERIFY(run.output.find("\"occupied_voxels\": " + std::to_string(carved.size())) !=
             std::string::npos);
+
+    // The run's automatic choices: the same line in the log as the CLI prints, a row each in
+    // the Choices panel, and a click on a row opens how it was derived.
+    QVERIFY(result->choices.size() >= 4);
+    for (const sonarcarve::RunChoice& choice : result->choices) {
+      const std::string line = sonarcarve::choiceLine(choice);
+      QVERIFY2(window.logText().contains(QString::fromStdString(line)), line.c_str());
+      QVERIFY2(run.output.find(line) != std::string::npos, line.c_str());
+    }
+    auto& choices = window.choicesPanel();
+    QCOMPARE(choices.rowCount(), static_cast<int>(result->choices.size()));
+    auto* dock = qobject_cast<QDockWidget*>(choices.parentWidget());
+    QVERIFY(dock);
+    dock->raise();  // a tab beside Accuracy
+    QTRY_VERIFY(choices.tree()->isVisible());
+    QTreeWidgetItem* first = choices.tree()->topLevelItem(0);
+    QVERIFY(!first->isExpanded());
+    const QRect row = choices.tree()->visualItemRect(first);
+    QTest::mouseClick(choices.tree()->viewport(), Qt::LeftButton, {}, row.center());
+    QVERIFY(first->isExpanded());
+    QCOMPARE(first->child(0)->text(2), QString::fromStdString(result->choices.front().detail));
   }
 
   // Pause holds the run mid-way; cancel stops it and the window carries on: a new run
