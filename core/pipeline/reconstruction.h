@@ -1,8 +1,8 @@
 // The one orchestrator of a reconstruction: a loop over uniform stages (pipeline/stage.h,
-// pipeline/stages/), read -> denoise -> choose -> carve -> surface -> mesh, then report ->
-// export for a run that writes a folder, with progress, cancellation (checked between frames
-// and inside long loops), memory checks and map updates for viewers (pipeline/map_updates.h).
-// The GUI and the CLI both run a Pipeline; neither re-implements a step.
+// pipeline/stages/), read -> denoise -> beam check -> choose -> carve -> surface -> mesh, then
+// report -> export for a run that writes a folder, with progress, cancellation (checked between
+// frames and inside long loops), memory checks and map updates for viewers
+// (pipeline/map_updates.h). The GUI and the CLI both run a Pipeline; neither re-implements a step.
 #pragma once
 
 #include <Eigen/Geometry>

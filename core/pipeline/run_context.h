@@ -24,7 +24,8 @@ struct RunContext {
   // The run's inputs.
   const Mission& mission;
   const ReconstructionParams& params;
-  const SonarModel& sonar;  ///< as carving sees it (carvingSonar)
+  /// As carving sees it (carvingSonar); the beam check may narrow its elevation beam.
+  SonarModel sonar;
   ThreadPool& pool;
   const MemoryWatch& memory;
   ReconstructionObserver* observer = nullptr;

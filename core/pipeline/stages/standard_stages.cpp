@@ -3,7 +3,7 @@
 namespace sonarcarve {
 
 std::vector<std::shared_ptr<const Stage>> standardStages() {
-  return {makeReadStage(),  makeDenoiseStage(), makeChooseStage(),
+  return {makeReadStage(),  makeDenoiseStage(), makeBeamCheckStage(), makeChooseStage(),
           makeCarveStage(), makeSurfaceStage(), makeMeshStage()};
 }
 

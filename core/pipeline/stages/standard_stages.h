@@ -1,5 +1,5 @@
 // The pipeline's stages, each in a file of its own here (pipeline/stage.h), in the order a
-// run takes them: read -> denoise -> choose -> carve -> surface -> mesh, then, for a run that
+// run takes them: read -> denoise -> beam check -> choose -> carve -> surface -> mesh, then, for a run that
 // writes its outputs to a folder, report -> export.
 #pragma once
 
@@ -17,6 +17,7 @@ struct ReconstructionResult;
 
 std::unique_ptr<Stage> makeReadStage();
 std::unique_ptr<Stage> makeDenoiseStage();
+std::unique_ptr<Stage> makeBeamCheckStage();
 std::unique_ptr<Stage> makeChooseStage();
 std::unique_ptr<Stage> makeCarveStage();
 std::unique_ptr<Stage> makeSurfaceStage();
@@ -45,7 +46,7 @@ std::unique_ptr<Stage> makeReportStage(
 /// Writes the outputs and the run manifest into `settings.folder`.
 std::unique_ptr<Stage> makeExportStage(OutputSettings settings);
 
-/// read, denoise, choose, carve, surface, mesh.
+/// read, denoise, beam check, choose, carve, surface, mesh.
 std::vector<std::shared_ptr<const Stage>> standardStages();
 
 }  // namespace sonarcarve

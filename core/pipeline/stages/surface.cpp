@@ -10,6 +10,28 @@
 namespace sonarcarve {
 namespace {
 
+// A run that keeps no surface says so, and why as far as the run can tell.
+RunChoice emptySurfaceChoice(const RunContext& run) {
+  RunChoice choice;
+  choice.name = "surface";
+  choice.value = "empty";
+  choice.warning = true;
+  const std::size_t voxels = run.result.occupied_voxels;
+  if (voxels == 0) {
+    choice.reason = "carving kept no voxel: every return was carved away by another view";
+    choice.action =
+        "check the navigation and the sonar's declared beam; beam_aware_carving: false carves "
+        "by the paper's rule";
+  } else {
+    choice.reason = "no carved voxel was the first return in enough views";
+    choice.action = "lower min_views, or check the navigation";
+  }
+  choice.detail = std::to_string(voxels) + " occupied voxels after carving " +
+                  std::to_string(run.result.frames_used) + " frames; min_views " +
+                  std::to_string(run.params.min_views);
+  return choice;
+}
+
 class SurfaceStage : public Stage {
  public:
   SurfaceStage() : Stage("surface", 0.2) {}
@@ -44,6 +66,9 @@ class SurfaceStage : public Stage {
       result.occlusion_ms_per_frame =
           evicting.occlusionMs() / static_cast<double>(std::max<std::size_t>(1, run.posed.size()));
       progress.report("occlusion", run.posed.size(), run.posed.size());
+      if (!result.cancelled && result.surface.empty()) {
+        run.choose(emptySurfaceChoice(run));
+      }
       return;
     }
     result.map = result.carver->blockMap();
@@ -56,6 +81,9 @@ class SurfaceStage : public Stage {
     result.cancelled = result.cancelled || surface.cancelled;
     result.occlusion_ms_per_frame = surface.ms_per_frame;
     result.surface = std::move(surface.surface);
+    if (!result.cancelled && result.surface.empty()) {
+      run.choose(emptySurfaceChoice(run));
+    }
   }
 };
 

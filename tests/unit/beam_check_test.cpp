@@ -1,0 +1,91 @@
+// The beam check (pipeline/beam_check.h): a sonar declared with a real beam's tails whose
+// frames show none (simulated with the clipped beam: nothing past +-aperture/2) is carved
+// inside its aperture and says so, instead of an empty map; a beam as declared is left as it
+// is; a run that keeps no surface says so.
+#include <gtest/gtest.h>
+
+#include "pipeline/reconstruction.h"
+#include "sim/demo_scenes.h"
+#include "sim/simulation_run.h"
+#include "support/test_support.h"
+
+namespace sonarcarve {
+namespace {
+
+class BeamCheck : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new test::ScratchDir();
+    simulate("clipped", test::clippedBeam(), false);
+    simulate("realistic", ImagingSettings{}, false);
+    simulate("empty", ImagingSettings{}, true);
+  }
+  static void TearDownTestSuite() { delete dir_; }
+
+  static void simulate(const std::string& name, const ImagingSettings& imaging, bool empty) {
+    SimulationRequest request{makeDemoScene("riser"), "riser", paperSonar(),
+                              TrajectorySpec{},       imaging, NoiseSpec::none(),
+                              NavErrorSpec{},         empty,   24,
+                              dir_->path() / name};
+    SilentProgress progress;
+    ThreadPool pool(2);
+    runSimulation(request, progress, pool);
+  }
+
+  static ReconstructionResult reconstruct(const Mission& mission) {
+    static ThreadPool pool(2);
+    ReconstructionParams params;
+    params.mesh_enabled = false;
+    SilentProgress progress;
+    return Pipeline(mission, params, pool).run(progress);
+  }
+
+  static Mission mission(const std::string& name) { return readMission(dir_->path() / name); }
+  static test::ScratchDir* dir_;
+};
+test::ScratchDir* BeamCheck::dir_ = nullptr;
+
+TEST_F(BeamCheck, ABeamWithoutTailsDeclaredWithThemIsCarvedInsideItsAperture) {
+  const Mission as_recorded = mission("clipped");
+  ASSERT_EQ(as_recorded.sonar.elevationBeam(), ElevationBeam::Clipped);
+  Mission declared_sinc = as_recorded;  // a spec sheet's pattern, wrong in its tails
+  declared_sinc.sonar = as_recorded.sonar.withElevationBeam(ElevationBeam::MainLobe);
+
+  const ReconstructionResult right = reconstruct(as_recorded);
+  const ReconstructionResult checked = reconstruct(declared_sinc);
+  const RunChoice* beam = findChoice(checked.choices, "elevation beam");
+  ASSERT_NE(beam, nullptr);
+  EXPECT_EQ(beam->value, "carved inside the aperture") << beam->detail;
+  EXPECT_TRUE(beam->warning);
+  // Carved as the beam really is: the same map as with the pattern declared right.
+  ASSERT_GT(right.surface.size(), 100u);
+  EXPECT_EQ(checked.surface.size(), right.surface.size());
+  EXPECT_EQ(checked.occupied_voxels, right.occupied_voxels);
+  EXPECT_EQ(findChoice(checked.choices, "surface"), nullptr);  // not empty
+  // The clipped sonar is not checked: nothing is carved past its aperture anyway.
+  EXPECT_EQ(findChoice(right.choices, "elevation beam"), nullptr);
+}
+
+TEST_F(BeamCheck, ABeamAsDeclaredIsLeftAsDeclared) {
+  const ReconstructionResult result = reconstruct(mission("realistic"));
+  const RunChoice* beam = findChoice(result.choices, "elevation beam");
+  ASSERT_NE(beam, nullptr);
+  EXPECT_EQ(beam->value, "as declared") << beam->detail;
+  EXPECT_FALSE(beam->warning);
+  // Enough views to have checked, not too few to tell.
+  EXPECT_EQ(beam->reason.find("too few"), std::string::npos) << beam->detail;
+  EXPECT_GT(result.surface.size(), 100u);
+}
+
+TEST_F(BeamCheck, ARunThatKeepsNoSurfaceSaysSo) {
+  const ReconstructionResult result = reconstruct(mission("empty"));
+  EXPECT_TRUE(result.surface.empty());
+  const RunChoice* surface = findChoice(result.choices, "surface");
+  ASSERT_NE(surface, nullptr);
+  EXPECT_EQ(surface->value, "empty");
+  EXPECT_TRUE(surface->warning);
+  EXPECT_FALSE(surface->reason.empty());
+}
+
+}  // namespace
+}  // namespace sonarcarve
