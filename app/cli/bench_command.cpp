@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "carve/carving_geometry.h"
 #include "carve/fast_carver.h"
 #include "carve/reference_carver.h"
 #include "cli/bench_reconstruct.h"
+#include "cli/bench_validate.h"
 #include "cli/commands.h"
 #include "cli/terminal_progress.h"
 #include "common/error.h"
@@ -38,6 +40,7 @@ struct BenchOptions {
   std::string beam = "clipped";
   bool json = false;
   BenchReconstructOptions reconstruct;
+  BenchValidateOptions validate;
 };
 
 struct Timings {
@@ -267,8 +270,9 @@ void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   auto o = std::make_shared<BenchOptions>();
   cmd->add_option("what", o->what,
                   "simulate | carve | reconstruct (a whole run of MISSION: ms per frame of every "
-                  "stage, the real-time factor, memory against frames carved)")
-      ->check(CLI::IsMember({"simulate", "carve", "reconstruct"}))
+                  "stage, the real-time factor, memory against frames carved) | validate (the "
+                  "validation set simulated and reconstructed: accuracy, points, time)")
+      ->check(CLI::IsMember({"simulate", "carve", "reconstruct", "validate"}))
       ->capture_default_str();
   cmd->add_option("mission", o->reconstruct.mission, "reconstruct: the mission to reconstruct");
   cmd->add_option("--params", o->reconstruct.params_file,
@@ -289,7 +293,8 @@ void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--scene", o->scene, "Demo scene")->capture_default_str();
   cmd->add_option("--frames", o->frames,
-                  "Frames to time; reconstruct: the mission's first this many (default: all)")
+                  "Frames to time; reconstruct: the mission's first this many; validate: each "
+                  "mission's first this many (default: all)")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   cmd->add_option("--beam", o->beam,
@@ -297,6 +302,10 @@ void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->check(CLI::IsMember({"clipped", "realistic"}))
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the figures as JSON");
+  cmd->add_option("--out", o->validate.out,
+                  "validate: folder for the missions, their runs and validation.md");
+  cmd->add_option("--only", o->validate.only, "validate: these missions only")
+      ->check(CLI::IsMember(validationMissions()));
   cmd->callback([cmd, o, &pool, &exit_code] {
     if (o->what == "reconstruct") {
       if (o->reconstruct.mission.empty()) {
@@ -306,6 +315,16 @@ void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       r.frames = cmd->count("--frames") > 0 ? o->frames : 0;
       r.json = o->json;
       exit_code = benchReconstruct(r, pool);
+      return;
+    }
+    if (o->what == "validate") {
+      if (o->validate.out.empty()) {
+        throw Error("bench validate", "--out", "expected a folder for the missions and the table");
+      }
+      BenchValidateOptions v = o->validate;
+      v.max_frames = cmd->count("--frames") > 0 ? o->frames : 0;
+      v.program = std::filesystem::read_symlink("/proc/self/exe").string();
+      exit_code = benchValidate(v);
       return;
     }
     exit_code = o->what == "carve" ? benchCarve(*o, pool) : benchSimulate(*o, pool);

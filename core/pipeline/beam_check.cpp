@@ -79,7 +79,7 @@ BeamTailCheck checkBeamTails(const std::vector<Eigen::Vector3f>& points_world,
   }
   check.samples = ratios.size();
   if (!ratios.empty()) {
-    check.tail_ratio = quantile(ratios, 0.5);
+    check.tail_ratio = quantile(ratios, kTailQuantile);
   }
   check.tails_present =
       check.samples < kBeamCheckMinSamples || check.tail_ratio >= kMissingTailRatio;
@@ -91,7 +91,7 @@ RunChoice beamTailChoice(const BeamTailCheck& check) {
   std::snprintf(detail, sizeof detail,
                 "between %.1f and %.1f degrees off the axis, %zu views of %zu points of a first "
                 "surface carved inside the aperture measured %.1f dB of the declared beam's "
-                "prediction (median; missing tails: under %.0f dB over at least %zu views)",
+                "prediction (upper quartile; missing tails: under %.0f dB over at least %zu views)",
                 radToDeg(check.band_lo_rad), radToDeg(check.band_hi_rad), check.samples,
                 check.points, 10.0 * std::log10(std::max(check.tail_ratio, 1e-12)),
                 10.0 * std::log10(kMissingTailRatio), kBeamCheckMinSamples);

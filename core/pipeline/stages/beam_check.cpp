@@ -18,12 +18,14 @@ namespace {
 
 constexpr std::size_t kCheckFrames = 24;
 
-// Every other frame of the middle of the mission, at most kCheckFrames of them.
+// The middle of the mission: every other frame of its middle 2 kCheckFrames, or every frame of
+// a mission shorter than that, at most kCheckFrames of them.
 std::vector<PosedFrame> middleFrames(const std::vector<PosedFrame>& posed) {
   const std::size_t span = std::min(posed.size(), 2 * kCheckFrames);
+  const std::size_t stride = span > kCheckFrames ? 2 : 1;
   const std::size_t first = (posed.size() - span) / 2;
   std::vector<PosedFrame> middle;
-  for (std::size_t i = first; i < first + span; i += 2) {
+  for (std::size_t i = first; i < first + span; i += stride) {
     middle.push_back(posed[i]);
   }
   return middle;

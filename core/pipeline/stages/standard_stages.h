@@ -1,6 +1,6 @@
 // The pipeline's stages, each in a file of its own here (pipeline/stage.h), in the order a
-// run takes them: read -> denoise -> beam check -> choose -> carve -> surface -> mesh, then, for a run that
-// writes its outputs to a folder, report -> export.
+// run takes them: read -> denoise -> beam check -> choose -> carve -> surface -> mesh, then, for a
+// run that writes its outputs to a folder, report -> export.
 #pragma once
 
 #include <filesystem>
