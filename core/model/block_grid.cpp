@@ -58,6 +58,9 @@ int BlockGrid::addBlock(const Eigen::Vector3i& block) {
   const auto [it, added] = blocks_.try_emplace(blockKey(block), blockCount());
   if (added) {
     block_coords_.push_back(block);
+    const double side = voxel_size_m_ * kBlockSide;
+    bounds_.extend(block.cast<double>() * side);
+    bounds_.extend((block.cast<double>().array() + 1.0).matrix() * side);
     logits_.resize(logits_.size() + kBlockVoxels, empty_logit_);
     reflectance_.resize(reflectance_.size() + kBlockVoxels, 0.0f);
   }

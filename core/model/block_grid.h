@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -45,6 +46,9 @@ class BlockGrid {
   /// Flat index of a voxel's parameters, its block added if absent.
   std::int64_t addVoxel(const Eigen::Vector3i& voxel);
 
+  /// The box (world frame, metres) that holds every block; empty if there are none.
+  const Eigen::AlignedBox3d& bounds() const { return bounds_; }
+
   int blockCount() const { return static_cast<int>(block_coords_.size()); }
   const Eigen::Vector3i& blockCoords(int index) const {
     return block_coords_[static_cast<std::size_t>(index)];
@@ -71,6 +75,7 @@ class BlockGrid {
   float empty_logit_;
   std::unordered_map<std::int64_t, int> blocks_;
   std::vector<Eigen::Vector3i> block_coords_;
+  Eigen::AlignedBox3d bounds_;
   std::vector<float> logits_;
   std::vector<float> reflectance_;
 };

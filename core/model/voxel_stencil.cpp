@@ -70,7 +70,14 @@ void StencilReader::findBlocks(const Eigen::Vector3i& lo, const Eigen::Vector3i&
   }
   block_lo_ = block_lo;
   block_hi_ = block_hi;
+  // Axes on which the range spans one block take block_lo's entry: no second look-up.
+  const int spans = (block_hi.x() != block_lo.x() ? 1 : 0) |
+                    (block_hi.y() != block_lo.y() ? 2 : 0) | (block_hi.z() != block_lo.z() ? 4 : 0);
   for (int s = 0; s < 8; ++s) {
+    if ((s & ~spans) != 0) {
+      blocks_[static_cast<std::size_t>(s)] = blocks_[static_cast<std::size_t>(s & spans)];
+      continue;
+    }
     const Eigen::Vector3i block((s & 1) != 0 ? block_hi.x() : block_lo.x(),
                                 (s & 2) != 0 ? block_hi.y() : block_lo.y(),
                                 (s & 4) != 0 ? block_hi.z() : block_lo.z());

@@ -40,6 +40,8 @@ class StencilReader {
  public:
   explicit StencilReader(const BlockGrid& grid) : grid_(grid) {}
 
+  const Eigen::AlignedBox3d& bounds() const { return grid_.bounds(); }
+
   /// Whether the voxel that contains `p` lies in a present block; if not, `exit_m` is how far
   /// along `direction` from `p` the ray leaves that (absent) block.
   bool inPresentBlock(const Eigen::Vector3d& p, const Eigen::Vector3d& direction, double& exit_m);

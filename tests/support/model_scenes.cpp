@@ -23,7 +23,8 @@ void voxelise(BlockGrid& grid, const SignedDistance& sd, const Eigen::AlignedBox
         }
         const bool fresh = grid.voxelIndex(voxel) < 0;
         const auto index = static_cast<std::size_t>(grid.addVoxel(voxel));
-        const auto logit = static_cast<float>(std::clamp(-distance * slope, -6.0, 6.0));
+        const auto logit = static_cast<float>(
+            std::clamp(-distance * slope, static_cast<double>(grid.emptyLogit()), 6.0));
         if (fresh || logit > grid.logits()[index]) {
           grid.logits()[index] = logit;
           grid.reflectance()[index] = reflectance;

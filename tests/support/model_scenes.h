@@ -13,7 +13,8 @@ namespace sonarcarve::test {
 using SignedDistance = std::function<double(const Eigen::Vector3d&)>;
 
 /// Sets the voxels of `box` within `band` voxels of the surface: logit = -sd / size * slope,
-/// clamped to +-6 (alpha 0.998 inside), reflectance `reflectance`. Voxels already set keep the
+/// clamped to [grid's empty logit, 6] (alpha 0.998 inside, as good as 0 outside), reflectance
+/// `reflectance`. Voxels already set keep the
 /// larger logit (solids unite).
 void voxelise(BlockGrid& grid, const SignedDistance& sd, const Eigen::AlignedBox3d& box,
               double band, double slope, float reflectance);
