@@ -70,12 +70,17 @@ TEST(ModelVsSimulator, WallAndCylinderGiveTheSimulatorsRangeProfile) {
   imaging.gain = 1.0;
   const RayCaster caster(scene);
   const SonarSimulator simulator(caster, sonar, imaging, pool);
-  const cv::Mat simulated = simulator.render(Eigen::Isometry3d::Identity());
+  // Off the origin, yawed and pitched: the two must agree on the frames' conventions too.
+  Eigen::Isometry3d T_world_sonar = Eigen::Isometry3d::Identity();
+  T_world_sonar.translate(Eigen::Vector3d(0.1, -0.2, 0.15));
+  T_world_sonar.rotate(Eigen::AngleAxisd(degToRad(4), Eigen::Vector3d::UnitZ()));
+  T_world_sonar.rotate(Eigen::AngleAxisd(degToRad(-6), Eigen::Vector3d::UnitY()));
+  const cv::Mat simulated = simulator.render(T_world_sonar);
 
   ModelSettings settings;
   const ForwardModel model(sonar, settings, pool);
   const FrameView view{
-      Eigen::Isometry3d::Identity(),
+      T_world_sonar,
       ElevationProfile::sincSquared(sonar.verticalAperture(), simulator.tracedElevation(), 12),
       1.0,
       {}};
