@@ -102,18 +102,19 @@ void StencilReader::readCorners(const Eigen::Vector3d& p, VoxelStencil& stencil)
   const Eigen::Vector3d f = u - floor_u;
   findBlocks(stencil.base, stencil.base + Eigen::Vector3i::Ones());
   const std::vector<float>& logits = grid_.logits();
+  // Per axis, the weights of the lower and upper corner and their derivatives.
+  const double wx[2] = {1.0 - f.x(), f.x()};
+  const double wy[2] = {1.0 - f.y(), f.y()};
+  const double wz[2] = {1.0 - f.z(), f.z()};
+  const double dw[2] = {-1.0 / size, 1.0 / size};
   for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3i bit(c & 1, (c >> 1) & 1, c >> 2);
-    Eigen::Vector3d w;
-    Eigen::Vector3d dw;
-    for (int axis = 0; axis < 3; ++axis) {
-      w[axis] = bit[axis] != 0 ? f[axis] : 1.0 - f[axis];
-      dw[axis] = (bit[axis] != 0 ? 1.0 : -1.0) / size;
-    }
+    const int x = c & 1;
+    const int y = (c >> 1) & 1;
+    const int z = c >> 2;
     const auto cu = static_cast<std::size_t>(c);
-    stencil.weight[cu] = w.prod();
-    stencil.d_weight[cu] = {dw.x() * w.y() * w.z(), w.x() * dw.y() * w.z(), w.x() * w.y() * dw.z()};
-    const std::int64_t index = indexOf(stencil.base + bit);
+    stencil.weight[cu] = wx[x] * wy[y] * wz[z];
+    stencil.d_weight[cu] = {dw[x] * wy[y] * wz[z], wx[x] * dw[y] * wz[z], wx[x] * wy[y] * dw[z]};
+    const std::int64_t index = indexOf(stencil.base + Eigen::Vector3i(x, y, z));
     const auto at = static_cast<std::size_t>(VoxelStencil::cornerPatch(c));
     stencil.index[at] = index;
     stencil.logit[at] = index < 0 ? grid_.emptyLogit() : logits[static_cast<std::size_t>(index)];
