@@ -4,6 +4,9 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "model/elevation_fan.h"
+#include "model/range_deposit.h"
+#include "model/reflectance.h"
 #include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
@@ -16,35 +19,6 @@ struct Sample {
   float energy = 0.0f;
   Eigen::Vector3f point;
 };
-
-// Adds `energy` spread uniformly over the ranges [r0, r1] into the column's range bins.
-void spreadOverRange(float r0, float r1, float energy, const RangeBins& bins, float* column) {
-  if (r1 < r0) {
-    std::swap(r0, r1);
-  }
-  const auto first = static_cast<double>(r0);
-  const auto last = static_cast<double>(r1);
-  const double span = last - first;
-  const double res = bins.resolution_m;
-  if (span < 1e-6 * res) {
-    if (const auto bin = bins.binOf(0.5 * (first + last))) {
-      column[*bin] += energy;
-    }
-    return;
-  }
-  // One division per spread, not one per bin: the same floats but for a last-bit tie in one
-  // value of billions (double rounding before the cast to float).
-  const double per_metre = energy / span;
-  const int b0 = std::max(0, static_cast<int>(std::floor((first - bins.min_m) / res)));
-  const int b1 = std::min(bins.count - 1, static_cast<int>(std::floor((last - bins.min_m) / res)));
-  for (int b = b0; b <= b1; ++b) {
-    const double lo = std::max(first, bins.min_m + b * res);
-    const double hi = std::min(last, bins.min_m + (b + 1) * res);
-    if (hi > lo) {
-      column[b] += static_cast<float>(per_metre * (hi - lo));
-    }
-  }
-}
 
 // Left edge and width of traced beam `j`, which may lie beyond the fan (j < 0 or j >= count):
 // those continue the outer beams' spacing.
@@ -111,22 +85,22 @@ SonarSimulator::SonarSimulator(const RayCaster& caster, const SonarModel& sonar,
   const SincSquaredBeam elevation_beam(aperture);
   traced_elevation_rad_ =
       realistic ? elevation_beam.null(settings_.side_lobes + 1) : 0.5 * aperture;
-  const double traced = 2.0 * traced_elevation_rad_;
-  elevations_ = std::max(2, static_cast<int>(std::ceil(traced / settings_.elevation_step_rad)));
-  const double step = traced / elevations_;
+  fan_ = elevationFan(traced_elevation_rad_, settings_.elevation_step_rad);
+  elevations_ = fan_.count;
   const int rays = settings_.rays_per_beam;
   // Each sample stands for dtheta / A of the aperture; sub-rays share the beam.
-  sample_scale_ = realistic
-                      ? static_cast<float>(settings_.gain * step / (aperture * rays))
-                      : static_cast<float>(settings_.gain) / static_cast<float>(elevations_ * rays);
+  sample_scale_ =
+      realistic
+          ? static_cast<float>(elevationSampleScale(settings_.gain, fan_.step_rad, aperture, rays))
+          : static_cast<float>(settings_.gain) / static_cast<float>(elevations_ * rays);
   const double visible_half = elevation_beam.halfAngleAt(settings_.visible_beam_level_db);
   for (int k = 0; k < elevations_; ++k) {
-    const double theta = -traced_elevation_rad_ + (k + 0.5) * step;
+    const double theta = fan_.angle(k);
     // Realistic: a ray stands for a cell of solid angle cos(theta) dtheta dphi, so that a
     // small target returns p(theta) at any elevation (rays crowd in bearing as |theta| grows).
-    beam_weight_.push_back(static_cast<float>(realistic
-                                                  ? elevation_beam.power(theta) * std::cos(theta)
-                                                  : sonar.beamPattern().weight(theta)));
+    beam_weight_.push_back(
+        static_cast<float>(realistic ? solidAngleWeight(elevation_beam.power(theta), theta)
+                                     : sonar.beamPattern().weight(theta)));
     visible_elevation_.push_back(static_cast<char>(std::abs(theta) <= visible_half));
   }
   if (realistic) {
@@ -136,14 +110,12 @@ SonarSimulator::SonarSimulator(const RayCaster& caster, const SonarModel& sonar,
 }
 
 void SonarSimulator::traceBearings(const SonarModel& sonar) {
-  const double step = 2.0 * traced_elevation_rad_ / elevations_;
   const std::vector<double> bearings =
       rayBearings(sonar.bearings(), pad_beams_, settings_.rays_per_beam);
   directions_.reserve(bearings.size() * static_cast<std::size_t>(elevations_));
   for (const double bearing : bearings) {
     for (int k = 0; k < elevations_; ++k) {
-      const double elevation = -traced_elevation_rad_ + (k + 0.5) * step;
-      directions_.push_back(pointFromPolar({1.0, bearing, elevation}).cast<float>());
+      directions_.push_back(rayDirection(bearing, fan_.angle(k)).cast<float>());
     }
   }
 }
@@ -254,9 +226,10 @@ cv::Mat SonarSimulator::render(const Eigen::Isometry3d& T_world_sonar, const Hit
                 range_factor = std::pow(static_cast<double>(hit.distance),
                                         settings_.tvg_exponent - settings_.spreading_exponent);
               }
-              sample.energy = sample_scale_ * caster_.scene().reflectivity[hit.triangle] *
-                              cos_incidence * beam_weight_[static_cast<std::size_t>(k)] *
-                              static_cast<float>(range_factor);
+              sample.energy =
+                  lambertianReturn(sample_scale_, caster_.scene().reflectivity[hit.triangle],
+                                   cos_incidence, beam_weight_[static_cast<std::size_t>(k)]) *
+                  static_cast<float>(range_factor);
               if (hits && in_fan && visible_elevation_[static_cast<std::size_t>(k)] != 0 &&
                   cos_incidence >= settings_.visible_min_cos_incidence &&
                   sonar_.range().binOf(hit.distance)) {
@@ -278,14 +251,14 @@ cv::Mat SonarSimulator::render(const Eigen::Isometry3d& T_world_sonar, const Hit
               const Sample& a = fan[static_cast<std::size_t>(k)];
               const bool linked_above = k + 1 < K && linked(k);
               if (a.hit && !linked_below) {
-                spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column);
+                depositAtRange(a.range, 0.5f * a.energy, sonar_.range(), column);
               }
               if (linked_above) {
                 const Sample& b = fan[static_cast<std::size_t>(k) + 1];
                 spreadOverRange(a.range, b.range, 0.5f * (a.energy + b.energy), sonar_.range(),
                                 column);
               } else if (a.hit) {
-                spreadOverRange(a.range, a.range, 0.5f * a.energy, sonar_.range(), column);
+                depositAtRange(a.range, 0.5f * a.energy, sonar_.range(), column);
               }
               linked_below = linked_above;
             }

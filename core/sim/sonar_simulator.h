@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "common/thread_pool.h"
+#include "model/elevation_fan.h"
 #include "sim/ray_caster.h"
 #include "sonar/sonar_model.h"
 
@@ -103,6 +104,7 @@ class SonarSimulator {
   const SonarModel& sonar_;
   ImagingSettings settings_;
   ThreadPool& pool_;
+  ElevationFan fan_;  // the elevation samples of every beam (model/elevation_fan.h)
   int elevations_ = 0;
   double traced_elevation_rad_ = 0.0;
   float sample_scale_ = 0.0f;                // gain * dtheta / (A * rays_per_beam)

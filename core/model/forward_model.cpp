@@ -1,0 +1,238 @@
+#include "model/forward_model.h"
+
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <numbers>
+
+#include "common/error.h"
+#include "model/elevation_fan.h"
+#include "model/range_deposit.h"
+#include "model/ray_march.h"
+#include "model/reflectance.h"
+
+namespace sonarcarve {
+namespace {
+
+// One elevation ray of one beam, and what its samples are weighted by.
+struct Ray {
+  int beam = 0;
+  double elevation_rad = 0.0;
+  Eigen::Vector3d direction_sonar;
+  Eigen::Vector3d direction_world;
+  double unit_scale = 0.0;   // dtheta / A
+  double scale = 0.0;        // G * dtheta / A
+  double beam_weight = 0.0;  // p(theta) cos(theta)
+  double power = 0.0;        // p(theta)
+};
+
+// Hands each parallel chunk a slot of its own (one per pool thread) for its accumulators.
+class Slots {
+ public:
+  explicit Slots(unsigned count) {
+    for (unsigned s = 0; s < count; ++s) {
+      free_.push_back(s);
+    }
+  }
+  unsigned take() {
+    const std::lock_guard lock(mutex_);
+    const unsigned slot = free_.back();
+    free_.pop_back();
+    return slot;
+  }
+  void give(unsigned slot) {
+    const std::lock_guard lock(mutex_);
+    free_.push_back(slot);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<unsigned> free_;
+};
+
+cv::Mat backgroundAdded(const cv::Mat& columns, const std::vector<double>& background) {
+  cv::Mat frame;
+  cv::transpose(columns, frame);
+  if (!background.empty()) {
+    for (int row = 0; row < frame.rows; ++row) {
+      frame.row(row) += background[static_cast<std::size_t>(row)];
+    }
+  }
+  return frame;
+}
+
+void checkView(const SonarModel& sonar, const FrameView& view) {
+  if (!view.background.empty() && static_cast<int>(view.background.size()) != sonar.rows()) {
+    throw Error("forward model", "background", "expected one background value per range bin");
+  }
+}
+
+}  // namespace
+
+ForwardModel::ForwardModel(const SonarModel& sonar, ModelSettings settings, ThreadPool& pool)
+    : sonar_(sonar), settings_(settings), pool_(pool) {
+  if (!(settings_.elevation_step_rad > 0.0) || settings_.samples_per_bin < 1 ||
+      !(settings_.min_alpha >= 0.0) || !(settings_.min_transmittance >= 0.0)) {
+    throw Error("forward model", "settings",
+                "expected a positive elevation step, >= 1 sample per bin and thresholds >= 0");
+  }
+}
+
+template <typename RayBody>
+void ForwardModel::forEachRay(const BlockGrid& grid, const FrameView& view,
+                              const RayBody& body) const {
+  checkView(sonar_, view);
+  const ElevationFan fan = elevationFan(view.profile.thetaMax(), settings_.elevation_step_rad);
+  const double unit_scale = elevationSampleScale(1.0, fan.step_rad, sonar_.verticalAperture(), 1);
+  const MarchLimits limits{sonar_.range(), settings_.samples_per_bin, settings_.min_alpha,
+                           settings_.min_transmittance};
+  const Eigen::Matrix3d R = view.T_world_sonar.linear();
+  const Eigen::Vector3d origin = view.T_world_sonar.translation();
+  Slots slots(pool_.size());
+  pool_.parallelFor(static_cast<std::size_t>(sonar_.cols()), 4,
+                    [&](std::size_t begin, std::size_t end) {
+                      const unsigned slot = slots.take();
+                      StencilReader reader(grid);
+                      std::vector<RaySample> samples;
+                      for (auto b = begin; b < end; ++b) {
+                        Ray ray;
+                        ray.beam = static_cast<int>(b);
+                        ray.unit_scale = unit_scale;
+                        ray.scale = view.gain * unit_scale;
+                        for (int k = 0; k < fan.count; ++k) {
+                          ray.elevation_rad = fan.angle(k);
+                          ray.direction_sonar =
+                              rayDirection(sonar_.bearings().centre(ray.beam), ray.elevation_rad);
+                          ray.direction_world = R * ray.direction_sonar;
+                          ray.power = view.profile.power(ray.elevation_rad);
+                          ray.beam_weight = solidAngleWeight(ray.power, ray.elevation_rad);
+                          marchRay(reader, grid.voxelSize(), origin, ray.direction_world,
+                                   ray.direction_sonar, limits, samples);
+                          if (!samples.empty()) {
+                            body(ray, samples, slot);
+                          }
+                        }
+                      }
+                      slots.give(slot);
+                    });
+}
+
+cv::Mat ForwardModel::predict(const BlockGrid& grid, const FrameView& view) const {
+  cv::Mat columns(sonar_.cols(), sonar_.rows(), CV_64F, cv::Scalar(0.0));
+  forEachRay(grid, view, [&](const Ray& ray, const std::vector<RaySample>& samples, unsigned) {
+    auto* column = columns.ptr<double>(ray.beam);
+    for (const RaySample& s : samples) {
+      const double energy =
+          lambertianReturn(ray.scale, s.reflectance, s.cos_incidence, ray.beam_weight) *
+          (s.transmittance * s.alpha);
+      depositAtRange(s.range_m, energy, sonar_.range(), column);
+    }
+  });
+  return backgroundAdded(columns, view.background);
+}
+
+ModelGradient ForwardModel::gradient(const BlockGrid& grid, const FrameView& view,
+                                     const cv::Mat& dloss_dframe) const {
+  if (dloss_dframe.type() != CV_64F || dloss_dframe.rows != sonar_.rows() ||
+      dloss_dframe.cols != sonar_.cols()) {
+    throw Error("forward model", "loss gradient", "expected a CV_64F image of the frame's size");
+  }
+  const std::size_t voxels = grid.voxelCount();
+  const std::size_t knots = view.profile.knotsDb().size();
+  const auto bins = static_cast<std::size_t>(sonar_.rows());
+  std::vector<std::unique_ptr<ModelGradient>> per_slot;
+  for (unsigned s = 0; s < pool_.size(); ++s) {
+    per_slot.push_back(std::make_unique<ModelGradient>(voxels, knots, bins));
+  }
+  cv::Mat dloss_columns;
+  cv::transpose(dloss_dframe, dloss_columns);
+  const Eigen::Matrix3d R = view.T_world_sonar.linear();
+  const double size = grid.voxelSize();
+  const double half_over_size = 0.5 / size;
+  const double db_to_power = std::numbers::ln10 / 10.0;
+
+  forEachRay(grid, view, [&](const Ray& ray, const std::vector<RaySample>& samples, unsigned slot) {
+    ModelGradient& out = *per_slot[slot];
+    const auto* dloss = dloss_columns.ptr<double>(ray.beam);
+    const double weight = ray.scale * ray.beam_weight;  // K: I += K * w_i
+    const Eigen::Vector3d& d = ray.direction_world;
+    double suffix = 0.0;        // S_i: sum over later samples of h a rho c prod (1 - alpha)
+    double upstream_sum = 0.0;  // sum over samples of dloss(bin) * w_i
+    Eigen::Vector3d dloss_ddirection = Eigen::Vector3d::Zero();
+    for (auto it = samples.rbegin(); it != samples.rend(); ++it) {
+      const RaySample& s = *it;
+      const auto bin = sonar_.range().binOf(s.range_m);
+      const double g_pixel = bin ? dloss[*bin] : 0.0;
+      const double h = weight * g_pixel;
+      const double t = s.transmittance;
+      const double a = s.alpha;
+      const double rho = s.reflectance;
+      const double c = s.cos_incidence;
+      upstream_sum += g_pixel * t * a * rho * c;
+      const double dalpha = t * (h * rho * c - suffix);
+      suffix = h * a * rho * c + (1.0 - a) * suffix;
+      const double dlogit = dalpha * a * (1.0 - a);
+      const double drho = h * t * a * c;
+      const double dcos = c > 0.0 ? h * t * a * rho : 0.0;
+      Eigen::Vector3d dgradient = Eigen::Vector3d::Zero();
+      if (dcos != 0.0) {
+        const double norm = s.gradient.norm();
+        const Eigen::Vector3d unit = s.gradient / norm;
+        dgradient = dcos * (d - c * unit) / norm;
+        dloss_ddirection += dcos * unit;
+      }
+      const VoxelStencil& st = s.stencil;
+      Eigen::Vector3d dpoint = Eigen::Vector3d::Zero();
+      for (int corner = 0; corner < 8; ++corner) {
+        const auto cu = static_cast<std::size_t>(corner);
+        const int at = VoxelStencil::cornerPatch(corner);
+        const double w = st.weight[cu];
+        const std::int64_t index = st.index[static_cast<std::size_t>(at)];
+        if (index >= 0) {
+          out.logits[static_cast<std::size_t>(index)] += dlogit * w;
+          out.reflectance[static_cast<std::size_t>(index)] += drho * w;
+        }
+        const Eigen::Vector3d corner_gradient = st.cornerGradient(corner, size);
+        for (int axis = 0; axis < 3; ++axis) {
+          const int step = axis == 0 ? 1 : (axis == 1 ? 4 : 16);
+          const double dl = w * dgradient[axis] * half_over_size;
+          const std::int64_t up = st.index[static_cast<std::size_t>(at + step)];
+          const std::int64_t down = st.index[static_cast<std::size_t>(at - step)];
+          if (up >= 0) {
+            out.logits[static_cast<std::size_t>(up)] += dl;
+          }
+          if (down >= 0) {
+            out.logits[static_cast<std::size_t>(down)] -= dl;
+          }
+        }
+        const double dweight = dlogit * st.logit[static_cast<std::size_t>(at)] +
+                               drho * st.reflectance[cu] + dgradient.dot(corner_gradient);
+        dpoint += dweight * st.d_weight[cu];
+      }
+      // p_world = t + R p_sonar, perturbed as R (p_sonar + omega x p_sonar + v).
+      const Eigen::Vector3d dpoint_sonar = R.transpose() * dpoint;
+      out.twist.head<3>() += dpoint_sonar;
+      out.twist.tail<3>() += s.p_sonar.cross(dpoint_sonar);
+    }
+    out.twist.tail<3>() += ray.direction_sonar.cross(R.transpose() * dloss_ddirection);
+    // I = G s p(theta) cos(theta) * sum_i w_i (+ B): through p, the knots; through G, the gain.
+    const double dpower = ray.scale * std::cos(ray.elevation_rad) * upstream_sum;
+    const ProfileWeights pw = view.profile.weights(ray.elevation_rad);
+    for (std::size_t m = 0; m < 4; ++m) {
+      out.knots_db[static_cast<std::size_t>(pw.knot[m])] +=
+          dpower * ray.power * db_to_power * pw.weight[m];
+    }
+    out.gain += ray.unit_scale * ray.beam_weight * upstream_sum;
+  });
+
+  ModelGradient total(voxels, knots, bins);
+  for (const auto& slot : per_slot) {
+    total.add(*slot);
+  }
+  for (int row = 0; row < dloss_dframe.rows; ++row) {
+    total.background[static_cast<std::size_t>(row)] = cv::sum(dloss_dframe.row(row))[0];
+  }
+  return total;
+}
+
+}  // namespace sonarcarve
