@@ -40,9 +40,9 @@ struct BeamTailCheck {
 inline constexpr double kTailQuantile = 0.75;
 /// The tails count as missing under 0.02 (-17 dB) of the declared beam's power. The upper
 /// quartile measured, for a beam as declared: -9.7 dB (the riser's first 12 frames) to +9.1 dB
-/// on the riser (noise-free and noisy, 12 to 98 frames) and the jacket node; for a beam without
-/// tails, -25.5 dB or less. Beam-aware carving carves away a surface whose real beam falls
-/// 20 dB (its dynamic range) under the declared one.
+/// (docs/validation.md: riser, noisy and coherent riser, orbits, jacket node, manifold, seabed);
+/// for a beam without tails, -25.5 dB or less. Beam-aware carving carves away a surface whose real
+/// beam falls 20 dB (its dynamic range) under the declared one.
 inline constexpr double kMissingTailRatio = 0.02;
 inline constexpr std::size_t kBeamCheckMinSamples = 200;
 
