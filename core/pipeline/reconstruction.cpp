@@ -12,10 +12,6 @@
 namespace sonarcarve {
 namespace {
 
-FrameSelection selectionOf(const ReconstructionParams& params) {
-  return {params.first_frame, params.last_frame, params.stride};
-}
-
 const ReconstructionParams& validated(const ReconstructionParams& params) {
   params.validate();
   return params;
@@ -53,6 +49,10 @@ class StageProgress : public Progress {
 
 }  // namespace
 
+FrameSelection frameSelection(const ReconstructionParams& params) {
+  return {params.first_frame, params.last_frame, params.stride};
+}
+
 SonarModel carvingSonar(const Mission& mission, const ReconstructionParams& params) {
   SonarModel sonar = params.vertical_aperture_rad > 0.0
                          ? mission.sonar.withVerticalAperture(params.vertical_aperture_rad)
@@ -64,11 +64,11 @@ SonarModel carvingSonar(const Mission& mission, const ReconstructionParams& para
 
 std::vector<std::size_t> selectedFrames(const Mission& mission,
                                         const ReconstructionParams& params) {
-  return selectFrames(mission.frames.size(), selectionOf(params));
+  return selectFrames(mission.frames.size(), frameSelection(params));
 }
 
 std::vector<std::size_t> placedFrames(const Mission& mission, const ReconstructionParams& params) {
-  return indicesOf(placeFrames(mission, selectionOf(params), [](const FrameProblem&) {}));
+  return indicesOf(placeFrames(mission, frameSelection(params), [](const FrameProblem&) {}));
 }
 
 void RunContext::skip(const FrameProblem& problem) {

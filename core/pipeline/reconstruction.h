@@ -109,6 +109,9 @@ class Pipeline {
 /// horizontal beam width where they give one.
 SonarModel carvingSonar(const Mission& mission, const ReconstructionParams& params);
 
+/// The frames the parameters select: first, last, stride.
+FrameSelection frameSelection(const ReconstructionParams& params);
+
 /// Indices of the frames the parameters select (first, last, stride).
 std::vector<std::size_t> selectedFrames(const Mission& mission, const ReconstructionParams& params);
 

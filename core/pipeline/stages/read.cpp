@@ -14,7 +14,7 @@ class ReadStage : public Stage {
 
   void run(RunContext& run, Progress&) const override {
     const ReconstructionParams& p = run.params;
-    run.posed = placeFrames(run.mission, {p.first_frame, p.last_frame, p.stride},
+    run.posed = placeFrames(run.mission, frameSelection(p),
                             [&run](const FrameProblem& problem) { run.skip(problem); });
     if (run.posed.empty()) {
       throw Error(run.mission.folder.string(), "", "no frame can be placed in the world");

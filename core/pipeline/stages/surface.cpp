@@ -48,29 +48,41 @@ class SurfaceStage : public Stage {
   }
 
   void run(RunContext& run, Progress& progress) const override {
-    ReconstructionResult& result = run.result;
     if (run.evicting_surface) {
-      EvictingSurface& evicting = *run.evicting_surface;
-      if (!result.cancelled) {
-        evicting.finish(*result.carver->evictableMap());
-      }
-      result.evicted = true;
-      result.pages_freed_early = evicting.pagesFreedEarly();
-      result.pages_set_aside = evicting.pagesSetAside();
-      result.aside_file_bytes = evicting.asideFileBytes();
-      result.temporary_file_problem = evicting.temporaryFileProblem();
-      result.surface = evicting.surface();
-      result.occupancy = evicting.takeOccupancy();
-      result.occupied_voxels = evicting.occupiedVoxels();
-      result.map_bytes = evicting.peakBytes();
-      result.occlusion_ms_per_frame =
-          evicting.occlusionMs() / static_cast<double>(std::max<std::size_t>(1, run.posed.size()));
-      progress.report("occlusion", run.posed.size(), run.posed.size());
-      if (!result.cancelled && result.surface.empty()) {
-        run.choose(emptySurfaceChoice(run));
-      }
-      return;
+      finishEvictingSurface(run, progress);
+    } else {
+      resolveWholeMap(run, progress);
     }
+    if (!run.result.cancelled && run.result.surface.empty()) {
+      run.choose(emptySurfaceChoice(run));
+    }
+  }
+
+ private:
+  // A run that let finished blocks go resolved most of the surface as the track left them.
+  static void finishEvictingSurface(RunContext& run, Progress& progress) {
+    ReconstructionResult& result = run.result;
+    EvictingSurface& evicting = *run.evicting_surface;
+    if (!result.cancelled) {
+      evicting.finish(*result.carver->evictableMap());
+    }
+    result.evicted = true;
+    result.pages_freed_early = evicting.pagesFreedEarly();
+    result.pages_set_aside = evicting.pagesSetAside();
+    result.aside_file_bytes = evicting.asideFileBytes();
+    result.temporary_file_problem = evicting.temporaryFileProblem();
+    result.surface = evicting.surface();
+    result.occupancy = evicting.takeOccupancy();
+    result.occupied_voxels = evicting.occupiedVoxels();
+    result.map_bytes = evicting.peakBytes();
+    result.occlusion_ms_per_frame =
+        evicting.occlusionMs() / static_cast<double>(std::max<std::size_t>(1, run.posed.size()));
+    progress.report("occlusion", run.posed.size(), run.posed.size());
+  }
+
+  // Occlusion resolution over the whole carved map.
+  static void resolveWholeMap(RunContext& run, Progress& progress) {
+    ReconstructionResult& result = run.result;
     result.map = result.carver->blockMap();
     const CarverStats stats = result.carver->stats();
     result.occupied_voxels = stats.occupied_voxels;
@@ -81,9 +93,6 @@ class SurfaceStage : public Stage {
     result.cancelled = result.cancelled || surface.cancelled;
     result.occlusion_ms_per_frame = surface.ms_per_frame;
     result.surface = std::move(surface.surface);
-    if (!result.cancelled && result.surface.empty()) {
-      run.choose(emptySurfaceChoice(run));
-    }
   }
 };
 
