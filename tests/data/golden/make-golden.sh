@@ -19,7 +19,7 @@ cd "$work"
 for name in riser-noisy jacket-node; do
   for mode in evicting whole-map; do
     for file in surface_points.ply mesh.ply mesh.stl map.bt params.yaml map.scmap refined_nav.csv; do
-      [ -e "$name/$mode/$file" ] && sha256sum "$name/$mode/$file"
+      if [ -e "$name/$mode/$file" ]; then sha256sum "$name/$mode/$file"; fi
     done
   done
 done
