@@ -166,6 +166,14 @@ TEST_F(FarNavigation, UtmNavigationGivesTheSameSurfaceAsNearZero) {
           << block << "." << distance;
     }
   }
+  // evaluate, given the local points and the world ground truth, meets them in the local frame.
+  const auto evaluated =
+      runCli("evaluate --json --reference " + quoted(mission("utm") / "ground_truth.ply") +
+             " --visible " + quoted(mission("utm") / "visible_points.ply") + " --reconstruction " +
+             quoted(output("utm") / "surface_points.ply"));
+  ASSERT_EQ(evaluated.exit_code, 0) << evaluated.output;
+  const nlohmann::json figures = nlohmann::json::parse(evaluated.output);
+  EXPECT_NEAR(figures["fscore"].get<double>(), near["evaluation"]["fscore"].get<double>(), 1e-3);
   RecordProperty("fscore_near", std::to_string(near["evaluation"]["fscore"].get<double>()));
   RecordProperty("fscore_utm", std::to_string(far["evaluation"]["fscore"].get<double>()));
 }
