@@ -4,6 +4,7 @@
 #include "cli/commands.h"
 #include "eval/evaluator.h"
 #include "geometry/scene_io.h"
+#include "io/mesh/point_cloud_ply.h"
 #include "occlusion/surface_points.h"
 
 namespace sonarcarve::cli {
@@ -17,7 +18,11 @@ void addEvaluateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--reference", o->reference, "Ground-truth mesh (PLY, STL, OBJ)")->required();
-  cmd->add_option("--reconstruction", o->reconstruction, "Reconstructed points (PLY)")->required();
+  cmd->add_option(
+         "--reconstruction", o->reconstruction,
+         "Reconstructed points (PLY; local to the mission origin of its comment "
+         "origin_ned_m, if any, which is subtracted from the reference and visible points)")
+      ->required();
   cmd->add_option("--visible", o->visible,
                   "Surface points the sonar saw (PLY); completeness is measured on them");
   cmd->add_option("--tau", o->tau, "Distance threshold of precision and completeness, m")
@@ -27,10 +32,13 @@ void addEvaluateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   cmd->callback([o, &pool, &exit_code] {
     const std::vector<Eigen::Vector3f> points =
         positionsOf(readSurfacePointsPly(o->reconstruction));
-    const EvaluationResult r =
-        evaluate(points, loadSceneMesh(o->reference),
-                 o->visible.empty() ? std::vector<Eigen::Vector3f>{} : readPointsPly(o->visible),
-                 pool, o->tau);
+    // Points local to a mission origin (their PLY comment) meet a reference in the world frame
+    // in that local frame: the reference minus the origin, in double.
+    const Eigen::Vector3d origin = plyOrigin(o->reconstruction);
+    const EvaluationResult r = evaluate(
+        points, loadSceneMesh(o->reference, kDefaultReflectivity, origin),
+        o->visible.empty() ? std::vector<Eigen::Vector3f>{} : readPointsPly(o->visible, origin),
+        pool, o->tau);
     if (!o->errors.empty()) {
       writePointsPly(points, o->errors, r.point_errors_m, "error_m");
     }

@@ -4,8 +4,10 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
+#include "io/mesh/point_cloud_ply.h"
 #include "io/run/run_manifest.h"
 #include "mesh/mesh_export.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve::cli {
 
@@ -16,6 +18,7 @@ void addExportCommand(CLI::App& app, int& exit_code) {
     std::string reconstruction, out, format, frame = "ned";
     std::vector<double> origin, crop;
     bool points = false;
+    bool add_origin = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("reconstruction", o->reconstruction, "Folder written by reconstruct")->required();
@@ -28,6 +31,9 @@ void addExportCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--crop", o->crop, "Keep only inside the box N0 E0 D0 N1 E1 D1 (m, NED)")
       ->expected(6);
   cmd->add_flag("--points", o->points, "Export the surface points instead of the mesh (PLY)");
+  cmd->add_flag("--add-origin", o->add_origin,
+                "World coordinates: add back the mission origin the reconstruction is local to "
+                "(its PLY comment origin_ned_m), in double (PLY double, OBJ 6 decimals; not STL)");
   cmd->callback([o, &exit_code] {
     ExportOptions options;
     options.format = o->format.empty() ? formatOfPath(o->out) : o->format;
@@ -52,13 +58,18 @@ void addExportCommand(CLI::App& app, int& exit_code) {
       std::cerr << "warning: the run that wrote " << folder.string()
                 << " was cancelled: its map holds the frames carved before\n";
     }
+    const std::filesystem::path input = folder / (o->points ? "surface_points.ply" : "mesh.ply");
+    options.mission_origin_ned_m = plyOrigin(input);
+    options.add_mission_origin = o->add_origin;
     if (o->points) {
-      exportPoints(readSurfacePointsPly(folder / "surface_points.ply"), o->out, options);
+      exportPoints(readSurfacePointsPly(input), o->out, options);
     } else {
-      exportMesh(readMeshPly(folder / "mesh.ply"), o->out, options);
+      exportMesh(readMeshPly(input), o->out, options);
     }
-    std::cout << "wrote " << o->out << " (" << options.format << ", " << options.frame
-              << " frame)\n";
+    std::cout << "wrote " << o->out << " (" << options.format << ", " << options.frame << " frame, "
+              << (o->add_origin ? "world coordinates"
+                                : "local to the origin " + nedText(options.mission_origin_ned_m))
+              << ")\n";
     exit_code = 0;
   });
 }

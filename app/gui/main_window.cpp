@@ -944,15 +944,18 @@ bool MainWindow::exportTo(Export kind, const QString& file) {
       if (!result_) {
         throw Error(path.string(), "", "no finished reconstruction to export yet");
       }
+      // The result is local to its mission's origin: the files say so (docs/conventions.md).
+      const Eigen::Vector3d origin =
+          mission_ ? mission_->origin_ned_m : Eigen::Vector3d::Zero().eval();
       switch (kind) {
         case Export::SurfacePly:
-          writeSurfacePointsPly(result_->surface, path);
+          writeSurfacePointsPly(result_->surface, path, origin);
           break;
         case Export::MapBt:
           if (!result_->map) {
             throw Error(path.string(), "", "the reference engine keeps no map to export");
           }
-          writeOccupancyBt(*result_->map, path);
+          writeOccupancyBt(*result_->map, path, origin);
           break;
         case Export::MeshPly:
         case Export::MeshStl: {
@@ -961,6 +964,7 @@ bool MainWindow::exportTo(Export kind, const QString& file) {
           }
           ExportOptions options;
           options.format = kind == Export::MeshPly ? "ply" : "stl";
+          options.mission_origin_ned_m = origin;
           exportMesh(result_->mesh, path, options);
           break;
         }

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/error.h"
+#include "common/number_text.h"
 #include "io/files/atomic_file.h"
+#include "sonar/mission_origin.h"
 
 // The .bt file is written as OctoMap's OcTree::writeBinary writes it, without building the
 // octree (hundreds of megabytes of nodes for a riser): the exported voxels lie in the map's
@@ -52,14 +56,16 @@ std::uint64_t interleave(std::uint32_t x, std::uint32_t y, std::uint32_t z, int 
 void collectOccupancyBlocks(const VoxelMap& map, std::size_t page,
                             std::vector<OccupancyBlock>& blocks) {
   // Occupied voxels on the shell of occupied space, which come block after block.
-  constexpr int kKeyOffset = 32768;
   std::size_t current = map.blockCount();
   map.forEachOccupiedOnShellIn(page, [&](const Eigen::Vector3i& voxel, float) {
-    const Eigen::Vector3i key = voxel + Eigen::Vector3i::Constant(kKeyOffset);
+    if ((voxel.array() < -kOctoMapKeyOffset).any() || (voxel.array() >= kOctoMapKeyOffset).any()) {
+      return;  // no key holds it: the run writes no map.bt (octoMapKeyProblem says why)
+    }
+    const Eigen::Vector3i key = voxel + Eigen::Vector3i::Constant(kOctoMapKeyOffset);
     const Eigen::Vector3i block_key = key / VoxelMap::kBlockSide;
-    const std::size_t index =
-        map.blockIndex(block_key - Eigen::Vector3i::Constant(kKeyOffset / VoxelMap::kBlockSide) -
-                       map.firstBlock());
+    const std::size_t index = map.blockIndex(
+        block_key - Eigen::Vector3i::Constant(kOctoMapKeyOffset / VoxelMap::kBlockSide) -
+        map.firstBlock());
     if (index != current) {
       current = index;
       OccupancyBlock block;
@@ -159,16 +165,33 @@ class BtWriter {
 
 }  // namespace
 
-void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path) {
+std::optional<std::string> octoMapKeyProblem(const Eigen::AlignedBox3d& box, double voxel_size_m) {
+  const double lo = (box.min() / voxel_size_m).array().floor().minCoeff();
+  const double hi = (box.max() / voxel_size_m).array().floor().maxCoeff();
+  if (lo >= -kOctoMapKeyOffset && hi < kOctoMapKeyOffset) {
+    return std::nullopt;
+  }
+  const double reach_m = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+  return "the map reaches " + shortestNumber(std::round(reach_m)) +
+         " m from its origin, beyond OctoMap's keys (+-" + std::to_string(kOctoMapKeyOffset) +
+         " voxels: +-" + shortestNumber(kOctoMapKeyOffset * voxel_size_m) + " m at " +
+         shortestNumber(voxel_size_m) + " m voxels)";
+}
+
+void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path,
+                      const Eigen::Vector3d& origin_ned_m) {
+  if (const auto problem = octoMapKeyProblem(map.bounds(), map.voxelSize())) {
+    throw Error(path.string(), "", "cannot write an OctoMap file: " + *problem);
+  }
   std::vector<OccupancyBlock> blocks;
   for (std::size_t page = 0; page < map.pageCount(); ++page) {
     collectOccupancyBlocks(map, page, blocks);
   }
-  writeOccupancyBt(std::move(blocks), map.voxelSize(), path);
+  writeOccupancyBt(std::move(blocks), map.voxelSize(), path, origin_ned_m);
 }
 
 void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
-                      const std::filesystem::path& path) {
+                      const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m) {
   std::sort(blocks.begin(), blocks.end(),
             [](const OccupancyBlock& a, const OccupancyBlock& b) { return a.morton < b.morton; });
   SortedOccupancy sorted;
@@ -177,11 +200,11 @@ void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
     sorted.mortons.push_back(b.morton);
   }
   sorted.read = [&blocks](std::size_t n, OccupancyBlock& out) { out = blocks[n]; };
-  writeOccupancyBt(sorted, voxel_size_m, path);
+  writeOccupancyBt(sorted, voxel_size_m, path, origin_ned_m);
 }
 
 void writeOccupancyBt(const SortedOccupancy& blocks, double voxel_size_m,
-                      const std::filesystem::path& path) {
+                      const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m) {
   BtWriter writer(blocks);
   std::string data;
   if (!blocks.mortons.empty()) {
@@ -190,8 +213,11 @@ void writeOccupancyBt(const SortedOccupancy& blocks, double voxel_size_m,
   }
   std::ostringstream header;
   header << "# Octomap OcTree binary file\n"
-         << "# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
-         << "id OcTree\nsize " << writer.nodes << "\nres " << voxel_size_m << "\ndata\n";
+         << "# (feel free to add / change comments, but leave the first line as it is!)\n#\n";
+  if (!origin_ned_m.isZero()) {
+    header << "# " << originComment(origin_ned_m) << "\n";
+  }
+  header << "id OcTree\nsize " << writer.nodes << "\nres " << voxel_size_m << "\ndata\n";
   data.insert(0, header.str());
   writeFileAtomically(path, data);
 }

@@ -15,6 +15,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "carve/voxel_map.h"
@@ -36,16 +38,31 @@ struct SortedOccupancy {
   std::function<void(std::size_t n, OccupancyBlock& out)> read;
 };
 
-/// Adds the exported blocks of one page of `map` (its face neighbours' voxels must be final).
+/// OctoMap's keys are 16 bits: voxel index + 32768, so a .bt holds voxels -32768 to 32767 on
+/// each axis (+-655.36 m at 2 cm voxels); a voxel beyond would wrap to the other side.
+inline constexpr int kOctoMapKeyOffset = 32768;
+
+/// Why a map over `box` (world NED, metres) cannot be written as .bt at `voxel_size_m` (its
+/// keys would wrap), in words naming the limit; nothing when it can.
+std::optional<std::string> octoMapKeyProblem(const Eigen::AlignedBox3d& box, double voxel_size_m);
+
+/// Adds the exported blocks of one page of `map` (its face neighbours' voxels must be final);
+/// voxels beyond OctoMap's keys are left out.
 void collectOccupancyBlocks(const VoxelMap& map, std::size_t page,
                             std::vector<OccupancyBlock>& blocks);
 
-/// Writes atomically; throws Error on failure, keeping any previous file.
-void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path);
-/// The same from collected blocks (any order), of a map of `voxel_size_m`.
+/// Writes atomically; throws Error on failure, keeping any previous file, and when the map's
+/// box does not fit OctoMap's keys (octoMapKeyProblem). A map local to a mission origin that is
+/// not zero says so in a header comment (`# origin_ned_m N E D ...`, which OctoMap skips).
+void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path,
+                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
+/// The same from collected blocks (any order), of a map of `voxel_size_m` whose box fits
+/// OctoMap's keys (the caller checks it: blocks beyond have wrapped keys).
 void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
-                      const std::filesystem::path& path);
+                      const std::filesystem::path& path,
+                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
 void writeOccupancyBt(const SortedOccupancy& blocks, double voxel_size_m,
-                      const std::filesystem::path& path);
+                      const std::filesystem::path& path,
+                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
 
 }  // namespace sonarcarve

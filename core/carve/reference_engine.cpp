@@ -3,7 +3,9 @@
 #include <unordered_set>
 
 #include "carve/carver.h"
+#include "carve/occupancy_export.h"
 #include "carve/reference_carver.h"
+#include "common/error.h"
 
 namespace sonarcarve {
 namespace {
@@ -16,9 +18,21 @@ struct VoxelHash {
   }
 };
 
+// The engine is an OctoMap octree: a voxel beyond its keys would be dropped without a word.
+const CarveParams& requireWithinOctoMapKeys(const CarveParams& params) {
+  if (params.region) {
+    if (const auto problem = octoMapKeyProblem(*params.region, params.voxel_size_m)) {
+      throw Error("reference engine", "",
+                  *problem + ": expected a map within them (the fast engine has no such limit)");
+    }
+  }
+  return params;
+}
+
 class ReferenceEngine final : public Carver {
  public:
-  explicit ReferenceEngine(const CarverSetup& setup) : carver_(setup.sonar, setup.params) {}
+  explicit ReferenceEngine(const CarverSetup& setup)
+      : carver_(setup.sonar, requireWithinOctoMapKeys(setup.params)) {}
 
   void integrate(const cv::Mat& image, const Eigen::Isometry3d& T_world_sonar, std::uint32_t,
                  const VisibilityLimit&, const BeforeDetection*) override {

@@ -7,6 +7,8 @@
 
 #include "common/error.h"
 #include "common/floor_div.h"
+#include "common/number_text.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 namespace {
@@ -50,6 +52,19 @@ VoxelMap::VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds, bool 
     : voxel_size_m_(voxel_size_m), with_counts_(with_counts) {
   if (!(voxel_size_m > 0.0) || bounds.isEmpty()) {
     throw Error("voxel map", "", "expected a positive voxel size and a non-empty region");
+  }
+  const double reach_voxels =
+      std::max(bounds.min().cwiseAbs().maxCoeff(), bounds.max().cwiseAbs().maxCoeff()) /
+      voxel_size_m;
+  if (!(reach_voxels < kMaxVoxelIndex)) {
+    throw Error(
+        "voxel map", "box (" + nedText(bounds.min()) + ") to (" + nedText(bounds.max()) + ") m",
+        "the map reaches " + shortestNumber(reach_voxels) +
+            " voxels from its origin: expected at most 2^25 = " + shortestNumber(kMaxVoxelIndex) +
+            " (+-" + shortestNumber(kMaxVoxelIndex * voxel_size_m) + " m at " +
+            shortestNumber(voxel_size_m) +
+            " m voxels); navigation is moved to a mission origin near the track, so a "
+            "map this far holds a track or a range this long");
   }
   const Eigen::Vector3i lo = voxelOf(bounds.min());
   const Eigen::Vector3i hi = voxelOf(bounds.max());

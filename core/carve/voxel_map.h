@@ -23,7 +23,9 @@
 // empty region of the box costs a null pointer; releasePage lets a finished region go
 // (eviction, docs/scaling.md). A block's index is its page's, times 512, plus its place in the
 // page: indices run page by page, not along the box's rows.
-// Limits: the box must hold at most 2^31 blocks; indices fit OctoMap's +-32768 voxels.
+// Limits: the box must hold at most 2^31 blocks and lie within kMaxVoxelIndex voxels of the
+// origin on every axis (the mission origin keeps survey maps near zero); map.bt holds the voxels
+// within OctoMap's +-32768 (carve/occupancy_export.h).
 // Not thread safe for writing; FastCarver coordinates its threads.
 #pragma once
 
@@ -43,11 +45,16 @@ class VoxelMap {
   static constexpr int kBlockSide = 8;
   static constexpr int kBlockVoxels = kBlockSide * kBlockSide * kBlockSide;
   static constexpr float kUnknown = std::numeric_limits<float>::infinity();
+  /// The farthest a map reaches from its origin on any axis, in voxels: 2^25 (671 km at 2 cm).
+  /// Voxel indices are 32-bit and the surface mesher packs tiles of 64 voxels in 21 bits
+  /// (+-2^26 voxels); half of that leaves room for every border and product of them.
+  static constexpr double kMaxVoxelIndex = 33554432.0;
   enum class BlockState : std::uint8_t { Unknown, Free, Mixed, Partial };
 
   /// Covers `bounds` (world NED, metres), rounded outwards to whole blocks; keeps the voxels'
   /// counts when `with_counts`. Throws Error if the voxel size is not positive or the box is
-  /// empty or too large.
+  /// empty, too large or reaches beyond kMaxVoxelIndex voxels from the origin (never a wrapped
+  /// or overflowed index).
   VoxelMap(double voxel_size_m, const Eigen::AlignedBox3d& bounds, bool with_counts = false);
   bool hasCounts() const { return with_counts_; }
 

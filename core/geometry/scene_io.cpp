@@ -6,6 +6,7 @@
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkSTLReader.h>
 #include <algorithm>
 
@@ -89,9 +90,20 @@ void requireMemoryToRead(const std::string& file, std::uintmax_t bytes) {
   }
 }
 
+// Moves an STL's points (floats already: the format holds no more) by `offset_m`.
+void shiftPolyData(vtkPolyData& poly, const Eigen::Vector3d& offset_m) {
+  vtkPoints* points = poly.GetPoints();
+  for (vtkIdType i = 0; points != nullptr && i < points->GetNumberOfPoints(); ++i) {
+    double p[3];
+    points->GetPoint(i, p);
+    points->SetPoint(i, p[0] + offset_m.x(), p[1] + offset_m.y(), p[2] + offset_m.z());
+  }
+}
+
 }  // namespace
 
-Scene loadSceneMesh(const std::filesystem::path& path, float reflectivity) {
+Scene loadSceneMesh(const std::filesystem::path& path, float reflectivity,
+                    const Eigen::Vector3d& origin_ned_m) {
   const std::string file = path.string();
   requireRegularFile(path, "a mesh: STL, OBJ or PLY");
   const std::uintmax_t bytes = std::filesystem::file_size(path);
@@ -103,11 +115,14 @@ Scene loadSceneMesh(const std::filesystem::path& path, float reflectivity) {
   vtkSmartPointer<vtkPolyData> poly;
   if (ext == ".stl") {
     poly = readStl(path);
+    if (poly != nullptr && !origin_ned_m.isZero()) {
+      shiftPolyData(*poly, -origin_ned_m);
+    }
   } else if (ext == ".obj") {
-    const ObjMesh obj = readObjMesh(path);
+    const ObjMesh obj = readObjMesh(path, origin_ned_m);
     poly = triangleMesh(obj.vertices, obj.triangles);
   } else if (ext == ".ply") {
-    const PlyMesh ply = readPlyMesh(path);
+    const PlyMesh ply = readPlyMesh(path, origin_ned_m);
     poly = triangleMesh(ply.vertices.positions, ply.triangles);
   } else {
     throw Error(file, "", "unknown mesh type '" + ext + "': expected .stl, .obj or .ply");
@@ -136,8 +151,9 @@ void writePointsPly(const std::vector<Eigen::Vector3f>& points, const std::files
   writePointCloudPly(path, cloud);
 }
 
-std::vector<Eigen::Vector3f> readPointsPly(const std::filesystem::path& path) {
-  return readPointCloudPly(path).positions;
+std::vector<Eigen::Vector3f> readPointsPly(const std::filesystem::path& path,
+                                           const Eigen::Vector3d& origin_ned_m) {
+  return readPointCloudPly(path, origin_ned_m).positions;
 }
 
 }  // namespace sonarcarve

@@ -78,6 +78,13 @@ Mission recordingMission(const std::filesystem::path& path, const SonarModel& so
                          const std::vector<double>& times_s,
                          const std::function<std::string(std::size_t)>& label);
 
+/// Refuses a navigation position that makes no physical sense (naming the navigation file and
+/// the sample), then moves a mission whose navigation lies far from zero to its origin
+/// (sonar/mission_origin.h): the track minus the origin, in double, and the origin added to
+/// `origin_ned_m`. A mission near zero is left as it is; calling it again changes nothing.
+/// openMission calls it for every reader.
+void placeMissionNearOrigin(Mission& mission);
+
 /// Applies the options' navigation, mounting and time offset to an opened mission (readers
 /// call it; a navigation or mounting given by the user replaces the recording's own).
 void applyOpenOptions(Mission& mission, const OpenOptions& options);

@@ -2,6 +2,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/number_text.h"
 #include "io/files/input_file.h"
 #include "io/frame_source.h"
 #include "io/import.h"
@@ -64,7 +65,9 @@ Mission openMission(const std::filesystem::path& path, const OpenOptions& option
   std::string known;
   for (const FrameSourceReader& reader : readers()) {
     if (reader.recognises(path)) {
-      return reader.open(path, options);
+      Mission mission = reader.open(path, options);
+      placeMissionNearOrigin(mission);
+      return mission;
     }
     known += (known.empty() ? "" : ", ") + reader.name;
   }
@@ -85,11 +88,37 @@ Mission recordingMission(const std::filesystem::path& path, const SonarModel& so
                   "",
                   nullptr,
                   {},
-                  {}};
+                  {},
+                  Eigen::Vector3d::Zero()};
   for (std::size_t k = 0; k < times_s.size(); ++k) {
     mission.frames.push_back({times_s[k], sonar.id(), label(k), 0});
   }
   return mission;
+}
+
+void placeMissionNearOrigin(Mission& mission) {
+  // The navigation file when it is one (nav.csv, --nav), else the recording and its source.
+  std::error_code ec;
+  const std::filesystem::path joined = mission.folder / mission.nav_file;
+  const std::string file =
+      !mission.nav_file.empty() && std::filesystem::is_regular_file(joined, ec)
+          ? joined.string()
+          : mission.folder.string() + " (navigation: " + mission.nav_file + ")";
+  const std::vector<NavSample>& samples = mission.nav.samples();
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    requirePlausiblePosition(samples[i].position_m, file,
+                             "navigation sample " + std::to_string(i) +
+                                 " (t = " + shortestNumber(samples[i].time_s) + " s)");
+  }
+  if (const auto problem = mountingOffsetProblem(mission.mounting.translation_m)) {
+    throw Error(mission.folder.string(), "mounting translation_m", *problem);
+  }
+  const Eigen::Vector3d origin = chooseMissionOrigin(mission.nav);
+  if (origin.isZero()) {
+    return;
+  }
+  mission.nav = translatedTrack(mission.nav, -origin);
+  mission.origin_ned_m += origin;
 }
 
 void applyOpenOptions(Mission& mission, const OpenOptions& options) {

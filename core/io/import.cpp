@@ -250,7 +250,7 @@ ImportReport importRecordingToMission(const ImportRequest& request, const OpenOp
     report.frames_outside_nav += mission.nav.covers(frame.time_s) ? 0 : 1;
   }
   writeMissionFolder(
-      request, mission.sonar, mission.mounting, mission.nav, mission.frames.size(),
+      request, mission.sonar, mission.mounting, worldTrack(mission), mission.frames.size(),
       [&](std::size_t k) { return loadFrame(mission, k); }, progress, report);
   return report;
 }

@@ -3,11 +3,16 @@
 //              and triangles; `ply-ascii` the same in ASCII
 //   stl        binary STL (triangles only)
 //   obj        Wavefront OBJ with vertex normals
-// Units are metres. Frames: `ned` writes the world frame as inside (north, east, down);
-// `zup` writes x = east, y = north, z = up (= -down), the right-handed Z-up frame CAD tools
-// expect, minus an optional origin (NED) so that coordinates stay small. An optional crop box
-// (NED) keeps the triangles whose three vertices are inside it. Every file is written to a
-// temporary name and renamed: a failure keeps the previous file.
+// Units are metres. Coordinates inside are local to the mission origin (sonar/mission_origin.h);
+// `add_mission_origin` adds it back (world coordinates, written in double: PLY `property
+// double`, OBJ with 6 decimals; STL, float32 only, is refused). Frames: `ned` writes north,
+// east, down as inside; `zup` writes x = east, y = north, z = up (= -down), the right-handed
+// Z-up frame CAD tools expect; an optional origin (NED) is subtracted first so that coordinates
+// stay small. A PLY whose coordinates are not world NED minus nothing carries the origin to add
+// back in a header comment (`origin_ned_m N E D`). An optional crop box (NED, in the
+// coordinates before the frame and the subtracted origin) keeps the triangles whose three
+// vertices are inside it. Every file is written to a temporary name and renamed: a failure
+// keeps the previous file.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -25,6 +30,10 @@ struct ExportOptions {
   std::string frame = "ned";                               ///< ned | zup
   Eigen::Vector3d origin_ned_m = Eigen::Vector3d::Zero();  ///< subtracted first
   std::optional<Eigen::AlignedBox3d> crop_ned_m;
+  /// The origin the coordinates given are local to (the mission's): world = local + it.
+  Eigen::Vector3d mission_origin_ned_m = Eigen::Vector3d::Zero();
+  /// Write world coordinates: the mission origin added back, in double.
+  bool add_mission_origin = false;
   void validate() const;
 };
 

@@ -1,6 +1,7 @@
 #include "occlusion/surface_points.h"
 
 #include "io/mesh/point_cloud_ply.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 
@@ -13,8 +14,12 @@ std::vector<Eigen::Vector3f> positionsOf(const SurfacePoints& points) {
   return positions;
 }
 
-void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path) {
+void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path,
+                           const Eigen::Vector3d& origin_ned_m) {
   PointCloud cloud;
+  if (!origin_ned_m.isZero()) {
+    cloud.comments.push_back(originComment(origin_ned_m));
+  }
   std::vector<float>& intensity = cloud.properties["intensity"];
   std::vector<std::uint32_t> views;
   for (const SurfacePoint& p : points) {

@@ -21,9 +21,11 @@ using SurfacePoints = std::vector<SurfacePoint>;
 /// The points' positions alone (for evaluation and distance colouring).
 std::vector<Eigen::Vector3f> positionsOf(const SurfacePoints& points);
 
-/// Binary PLY with vertex properties x, y, z (float), intensity (float), views (uint).
+/// Binary PLY with vertex properties x, y, z (float), intensity (float), views (uint), and a
+/// header comment with the mission origin when it is not zero (io/mesh/point_cloud_ply.h).
 /// Atomic: a failure keeps the previous file.
-void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path);
+void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path,
+                           const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
 /// Reads x, y, z (and intensity, views when present) of a PLY point cloud.
 SurfacePoints readSurfacePointsPly(const std::filesystem::path& path);
 

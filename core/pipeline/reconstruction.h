@@ -41,6 +41,8 @@ struct ReconstructionResult {
   /// did not have to).
   std::string temporary_file_problem;
   OccupancyStore occupancy;  ///< an evicting run's .bt export blocks
+  /// Why map.bt is not written (the map's box is beyond OctoMap's keys), or empty.
+  std::string map_bt_skipped;
   std::size_t frames_used = 0;
   std::string detector;  ///< the detector that ran (`auto` made concrete)
   /// The run's automatic decisions, in the order made (pipeline/run_choice.h).

@@ -105,7 +105,8 @@ nlohmann::json poseRefinementReport(const Mission& mission,
   std::error_code ec;
   const auto truth_file = mission.folder / "ground_truth_poses.csv";
   if (!refinement.empty() && std::filesystem::is_regular_file(truth_file, ec)) {
-    const NavTrack truth = readNavCsv(truth_file);
+    // The truth is in the world frame, as the mission's navigation was read.
+    const NavTrack truth = translatedTrack(readNavCsv(truth_file), -mission.origin_ned_m);
     const auto block = [](const TrackError& e) {
       return nlohmann::json{{"rms_position_m", e.rms_position_m},
                             {"rms_heading_deg", e.rms_heading_deg},

@@ -13,7 +13,9 @@ namespace sonarcarve {
 
 std::string reconstructionReport(const Mission& mission, const ReconstructionParams& params,
                                  const ReconstructionResult& result, ThreadPool& pool) {
+  const Eigen::Vector3d& origin = mission.origin_ned_m;
   nlohmann::json report = {{"mission", mission.folder.string()},
+                           {"origin_ned_m", {origin.x(), origin.y(), origin.z()}},
                            {"engine", std::string(toString(params.engine))},
                            {"detector", result.detector},
                            {"smoothing", params.detector.smoothing},
@@ -66,10 +68,11 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
   if (std::filesystem::exists(truth, ec) && !result.surface.empty()) {
     const std::vector<Eigen::Vector3f> points = positionsOf(result.surface);
     // Ground truth read once, for the points and for the mesh.
-    const Scene truth_mesh = loadSceneMesh(truth);
+    // The ground truth is in the world frame, as the navigation was: moved to the origin too.
+    const Scene truth_mesh = loadSceneMesh(truth, kDefaultReflectivity, origin);
     const auto visible_file = mission.folder / "visible_points.ply";
     const std::vector<Eigen::Vector3f> visible = std::filesystem::exists(visible_file, ec)
-                                                     ? readPointsPly(visible_file)
+                                                     ? readPointsPly(visible_file, origin)
                                                      : std::vector<Eigen::Vector3f>{};
     report["evaluation"] =
         nlohmann::json::parse(evaluate(points, truth_mesh, visible, pool).toJson());

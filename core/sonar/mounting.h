@@ -8,6 +8,10 @@
 
 namespace sonarcarve {
 
+/// A sonar sits on its vehicle: an offset beyond this (metres) is an error in the mounting,
+/// not a place (the longest survey ships are a few hundred metres).
+inline constexpr double kMaxMountingOffset_m = 1000.0;
+
 struct Mounting {
   Eigen::Vector3d translation_m = Eigen::Vector3d::Zero();
   RollPitchYaw rpy;

@@ -32,7 +32,7 @@ long long resolved(long long written, std::size_t vertices) {
 
 }  // namespace
 
-ObjMesh readObjMesh(const std::filesystem::path& path) {
+ObjMesh readObjMesh(const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m) {
   const std::string file = path.string();
   std::istringstream text(std::string(withoutByteOrderMark(readInputFile(path, "an OBJ mesh"))));
   ObjMesh mesh;
@@ -45,10 +45,12 @@ ObjMesh readObjMesh(const std::filesystem::path& path) {
     words >> keyword;
     if (keyword == "v") {
       std::string x, y, z;
-      Eigen::Vector3f p;
-      if (!(words >> x >> y >> z) || !parse(x, p.x()) || !parse(y, p.y()) || !parse(z, p.z())) {
+      Eigen::Vector3d world;
+      if (!(words >> x >> y >> z) || !parse(x, world.x()) || !parse(y, world.y()) ||
+          !parse(z, world.z())) {
         throw Error(file, linePlace(line_number), "expected 'v X Y Z' with three numbers");
       }
+      const Eigen::Vector3f p = (world - origin_ned_m).cast<float>();
       requireFinitePoint(p, file, linePlace(line_number));
       mesh.vertices.push_back(p);
     } else if (keyword == "f") {

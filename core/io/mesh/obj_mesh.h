@@ -19,6 +19,9 @@ struct ObjMesh {
 /// indices after a slash are ignored); other lines are skipped. Throws Error naming the file,
 /// the line and what was expected for a vertex that is not three finite numbers or a face
 /// whose index names no vertex.
-ObjMesh readObjMesh(const std::filesystem::path& path);
+/// `origin_ned_m` is subtracted from every vertex, in double, before it becomes a float (a mesh
+/// in world coordinates far from zero read into a mission's local frame).
+ObjMesh readObjMesh(const std::filesystem::path& path,
+                    const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
 
 }  // namespace sonarcarve

@@ -101,7 +101,10 @@ PlyHeader checkPlyFile(const std::filesystem::path& path) {
     } else if (keyword == "end_header") {
       ended = true;
       break;
-    } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+    } else if (keyword == "comment") {
+      const std::size_t text = line.find_first_not_of(" \t", line.find("comment") + 7);
+      header.comments.push_back(text == std::string::npos ? "" : line.substr(text));
+    } else if (keyword != "obj_info" && !keyword.empty()) {
       fail("unexpected header line '" + line + "'");
     }
   }

@@ -26,7 +26,8 @@ struct PlyElement {
 struct PlyHeader {
   std::string format;  ///< ascii | binary_little_endian | binary_big_endian
   std::vector<PlyElement> elements;
-  std::uint64_t body_offset = 0;  ///< byte where the data starts
+  std::uint64_t body_offset = 0;      ///< byte where the data starts
+  std::vector<std::string> comments;  ///< the text of its `comment` lines, in order
 };
 
 /// Returns the parsed header of a file that passed the checks.

@@ -12,6 +12,7 @@
 #include "io/files/atomic_file.h"
 #include "io/files/finite_points.h"
 #include "io/mesh/ply_check.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 namespace {
@@ -61,8 +62,11 @@ void writePointCloudPly(const std::filesystem::path& path, const PointCloud& clo
   }
   std::ostringstream out;
   out << "ply\nformat binary_little_endian 1.0\ncomment SonarCarve point cloud: world frame, "
-         "metres\nelement vertex "
-      << n << "\nproperty float x\nproperty float y\nproperty float z\n";
+         "metres\n";
+  for (const std::string& comment : cloud.comments) {
+    out << "comment " << comment << "\n";
+  }
+  out << "element vertex " << n << "\nproperty float x\nproperty float y\nproperty float z\n";
   for (const auto& entry : cloud.properties) {
     out << "property float " << entry.first << "\n";
   }
@@ -135,7 +139,8 @@ class PlyValues {
   bool swap_;
 };
 
-PointCloud readVertices(const std::string& file, const PlyElement& element, PlyValues& values) {
+PointCloud readVertices(const std::string& file, const PlyElement& element, PlyValues& values,
+                        const Eigen::Vector3d& origin_ned_m) {
   const auto count = static_cast<std::size_t>(element.count);
   int ix = -1, iy = -1, iz = -1;
   for (std::size_t k = 0; k < element.properties.size(); ++k) {
@@ -172,7 +177,7 @@ PointCloud readVertices(const std::string& file, const PlyElement& element, PlyV
       }
     }
     const auto at = [&](int k) { return v[static_cast<std::size_t>(k)]; };
-    cloud.positions[i] = Eigen::Vector3d(at(ix), at(iy), at(iz)).cast<float>();
+    cloud.positions[i] = (Eigen::Vector3d(at(ix), at(iy), at(iz)) - origin_ned_m).cast<float>();
     requireFinitePoint(cloud.positions[i], file, "vertex " + std::to_string(i));
     for (std::size_t k = 0; k < v.size(); ++k) {
       auto it = cloud.properties.find(element.properties[k].name);
@@ -240,7 +245,8 @@ Triangles readFaces(const std::string& file, const PlyElement& element, std::siz
   return triangles;
 }
 
-PlyMesh readPly(const std::filesystem::path& path, bool with_faces) {
+PlyMesh readPly(const std::filesystem::path& path, bool with_faces,
+                const Eigen::Vector3d& origin_ned_m) {
   const std::string file = path.string();
   const PlyHeader header = checkPlyFile(path);  // a regular file, well formed, body long enough
   if (header.elements.empty() || header.elements.front().name != "vertex") {
@@ -250,7 +256,8 @@ PlyMesh readPly(const std::filesystem::path& path, bool with_faces) {
   in.seekg(static_cast<std::streamoff>(header.body_offset));
   PlyValues values(in, header.format);
   PlyMesh mesh;
-  mesh.vertices = readVertices(file, header.elements.front(), values);
+  mesh.vertices = readVertices(file, header.elements.front(), values, origin_ned_m);
+  mesh.vertices.comments = header.comments;
   if (with_faces) {
     if (header.elements.size() < 2 || header.elements[1].name != "face") {
       throw Error(file, "header", "expected a face element after the vertices");
@@ -262,12 +269,30 @@ PlyMesh readPly(const std::filesystem::path& path, bool with_faces) {
 
 }  // namespace
 
-PointCloud readPointCloudPly(const std::filesystem::path& path) {
-  return readPly(path, false).vertices;
+Eigen::Vector3d plyOrigin(const std::filesystem::path& path) {
+  for (const std::string& comment : checkPlyFile(path).comments) {
+    std::istringstream words(comment);
+    std::string keyword;
+    if (!(words >> keyword) || keyword != kOriginCommentKeyword) {
+      continue;
+    }
+    Eigen::Vector3d origin;
+    if (!(words >> origin.x() >> origin.y() >> origin.z()) || !origin.allFinite()) {
+      throw Error(path.string(), "header comment '" + comment + "'",
+                  "expected 'origin_ned_m N E D' with three finite numbers (metres)");
+    }
+    return origin;
+  }
+  return Eigen::Vector3d::Zero();
 }
 
-PlyMesh readPlyMesh(const std::filesystem::path& path) {
-  return readPly(path, true);
+PointCloud readPointCloudPly(const std::filesystem::path& path,
+                             const Eigen::Vector3d& origin_ned_m) {
+  return readPly(path, false, origin_ned_m).vertices;
+}
+
+PlyMesh readPlyMesh(const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m) {
+  return readPly(path, true, origin_ned_m);
 }
 
 }  // namespace sonarcarve

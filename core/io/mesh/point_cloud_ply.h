@@ -17,6 +17,8 @@ namespace sonarcarve {
 struct PointCloud {
   std::vector<Eigen::Vector3f> positions;
   std::map<std::string, std::vector<float>> properties;  ///< one value per point
+  /// Header comments after SonarCarve's first one (written) or all of them (read).
+  std::vector<std::string> comments;
 };
 
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
@@ -28,8 +30,15 @@ void writePointCloudPly(
     const std::map<std::string, std::vector<std::uint32_t>>& uint_properties = {},
     const Triangles& triangles = {});
 /// Throws Error naming the file and the place on a missing, truncated or malformed file, or a
-/// vertex that is not finite.
-PointCloud readPointCloudPly(const std::filesystem::path& path);
+/// vertex that is not finite. `origin_ned_m` is subtracted from every position in double, before
+/// it becomes a float (world coordinates far from zero read into a mission's local frame).
+PointCloud readPointCloudPly(const std::filesystem::path& path,
+                             const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
+
+/// The origin a PLY file's header carries (originComment, sonar/mission_origin.h), zero when it
+/// carries none. Throws
+/// Error naming the file on an origin comment that is not three finite numbers.
+Eigen::Vector3d plyOrigin(const std::filesystem::path& path);
 
 struct PlyMesh {
   PointCloud vertices;
@@ -37,6 +46,7 @@ struct PlyMesh {
 };
 /// A mesh: the vertices as readPointCloudPly reads them, then the face element, polygons split
 /// into triangles. Throws Error naming the face whose vertex index is out of range.
-PlyMesh readPlyMesh(const std::filesystem::path& path);
+PlyMesh readPlyMesh(const std::filesystem::path& path,
+                    const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
 
 }  // namespace sonarcarve

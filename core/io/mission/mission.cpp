@@ -172,7 +172,8 @@ Mission readMission(const std::filesystem::path& folder_or_yaml) {
                   index_file,
                   nullptr,
                   {},
-                  {}};
+                  {},
+                  Eigen::Vector3d::Zero()};
   mission.source = makeMissionFolderSource(mission);
   return mission;
 }
@@ -188,6 +189,10 @@ Frame loadFrame(const Mission& mission, std::size_t index) {
   // Every source gives the sonar's counts; the engine works on power.
   mission.sonar.intensityScale().countsToPower(frame.image, mission.folder.string(), record.file);
   return frame;
+}
+
+NavTrack worldTrack(const Mission& mission) {
+  return translatedTrack(mission.nav, mission.origin_ned_m);
 }
 
 std::vector<FrameProblem> checkFrames(const Mission& mission) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "sonar/frame.h"
+#include "sonar/mission_origin.h"
 #include "sonar/mounting.h"
 #include "sonar/nav_track.h"
 #include "sonar/sonar_model.h"
@@ -52,6 +53,9 @@ struct Mission {
   /// What the recording holds beyond its frames, one line each (a bag's topics with their
   /// types and message counts, and the conventions assumed), for `info`.
   std::vector<std::string> contents;
+  /// Subtracted from the navigation when it was read (sonar/mission_origin.h): the track, the
+  /// map and every output are local to it; world NED = local + origin. Zero near zero.
+  Eigen::Vector3d origin_ned_m = Eigen::Vector3d::Zero();
 };
 
 /// A frame that could not be used, with the reason.
@@ -72,6 +76,9 @@ Frame loadFrame(const Mission& mission, std::size_t index);
 
 /// The source that reads a mission folder's PNG frames (readMission attaches it).
 std::shared_ptr<const FrameSource> makeMissionFolderSource(const Mission& mission);
+
+/// The mission's navigation in the world frame (its origin added back), as read.
+NavTrack worldTrack(const Mission& mission);
 
 /// Tries to load every frame; returns those that fail, in index order.
 std::vector<FrameProblem> checkFrames(const Mission& mission);

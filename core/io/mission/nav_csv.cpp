@@ -5,6 +5,7 @@
 #include "io/files/csv_table.h"
 #include "io/files/yaml_fields.h"
 #include "sonar/attitude.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 
@@ -31,6 +32,7 @@ NavTrack readNavCsv(const std::filesystem::path& path) {
                       shortestNumber(samples.back().time_s) + " s");
     }
     s.position_m = {table.number(row, n), table.number(row, e), table.number(row, d)};
+    requirePlausiblePosition(s.position_m, table.file(), linePlace(row.line));
     s.q_world_vehicle = quaternionFromRollPitchYaw({degToRad(table.number(row, roll)),
                                                     degToRad(table.number(row, pitch)),
                                                     degToRad(table.number(row, yaw))});

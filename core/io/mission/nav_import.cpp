@@ -14,6 +14,7 @@
 #include "io/files/csv_table.h"
 #include "io/files/yaml_fields.h"
 #include "sonar/attitude.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 namespace {
@@ -158,6 +159,7 @@ NavTrack trackFromTable(const CsvTable& table, const NavMapping& mapping) {
     if (!s.position_m.allFinite() || !std::isfinite(s.time_s)) {
       throw Error(table.file(), linePlace(row.line), "value out of range after unit conversion");
     }
+    requirePlausiblePosition(s.position_m, table.file(), linePlace(row.line));
     samples.push_back(s);
   }
   return NavTrack(std::move(samples));

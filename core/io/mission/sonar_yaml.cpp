@@ -2,6 +2,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 namespace {
@@ -185,6 +186,9 @@ Mounting mountingFromYaml(const YAML::Node& node, const YamlFields& fields,
   const auto t =
       fields.numbers(fields.child(node, path, "translation_m"), path + ".translation_m", 3);
   m.translation_m = Eigen::Vector3d(t[0], t[1], t[2]);
+  if (const auto problem = mountingOffsetProblem(m.translation_m)) {
+    fields.fail(node["translation_m"], path + ".translation_m", *problem);
+  }
   const auto r = fields.numbers(fields.child(node, path, "roll_pitch_yaw_deg"),
                                 path + ".roll_pitch_yaw_deg", 3);
   m.rpy = RollPitchYaw{degToRad(r[0]), degToRad(r[1]), degToRad(r[2])};

@@ -20,14 +20,19 @@ namespace {
 void writeOutputs(const RunContext& run, const OutputSettings& settings, RunManifest& manifest) {
   const std::filesystem::path& out = settings.folder;
   const ReconstructionResult& result = run.result;
-  writeSurfacePointsPly(result.surface, out / "surface_points.ply");
+  const Eigen::Vector3d& origin = run.mission.origin_ned_m;
+  writeSurfacePointsPly(result.surface, out / "surface_points.ply", origin);
   manifest.wrote("surface_points.ply");
-  if (result.evicted) {
-    writeOccupancyBt(result.occupancy.sorted(), run.params.carve.voxel_size_m, out / "map.bt");
+  const bool bt = result.map_bt_skipped.empty();  // else the read stage said why
+  if (result.evicted && bt) {
+    writeOccupancyBt(result.occupancy.sorted(), run.params.carve.voxel_size_m, out / "map.bt",
+                     origin);
     manifest.wrote("map.bt");
   } else if (result.map) {
-    writeOccupancyBt(*result.map, out / "map.bt");
-    manifest.wrote("map.bt");
+    if (bt) {
+      writeOccupancyBt(*result.map, out / "map.bt", origin);
+      manifest.wrote("map.bt");
+    }
     if (settings.save_map) {
       saveMap(*result.map, out / "map.scmap");
       manifest.wrote("map.scmap");
@@ -35,6 +40,7 @@ void writeOutputs(const RunContext& run, const OutputSettings& settings, RunMani
   }
   if (!result.mesh.triangles.empty()) {
     ExportOptions ply;
+    ply.mission_origin_ned_m = origin;
     exportMesh(result.mesh, out / "mesh.ply", ply);
     manifest.wrote("mesh.ply");
     ExportOptions stl;
@@ -44,7 +50,8 @@ void writeOutputs(const RunContext& run, const OutputSettings& settings, RunMani
   }
   if (!result.refinement.empty()) {
     writeFileAtomically(out / "refined_nav.csv",
-                        navCsvText(refinedTrack(run.mission, result.refinement)));
+                        navCsvText(translatedTrack(refinedTrack(run.mission, result.refinement),
+                                                   run.mission.origin_ned_m)));
     manifest.wrote("refined_nav.csv");
   }
   writeFileAtomically(out / "params.yaml", run.params.toYaml());

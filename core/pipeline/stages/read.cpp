@@ -1,12 +1,37 @@
 // read: the selected frames that the navigation places (the others are skipped with the
 // reason), the box the map covers (a region outside every view is an error before any frame
 // is read) and the buffers the run will hold, checked against its memory budget.
+#include "carve/occupancy_export.h"
 #include "common/error.h"
 #include "pipeline/run_context.h"
 #include "pipeline/stages/standard_stages.h"
 
 namespace sonarcarve {
 namespace {
+
+// map.bt holds the map only where OctoMap's 16-bit keys reach: a map beyond is carved and its
+// other outputs written, but no map.bt (whose keys would wrap to the far side), and the run
+// says so.
+void noteOctoMapReach(RunContext& run) {
+  const double voxel_m = run.params.carve.voxel_size_m;
+  const std::optional<std::string> problem = octoMapKeyProblem(run.bounds, voxel_m);
+  if (!problem) {
+    return;
+  }
+  run.result.map_bt_skipped = *problem;
+  RunChoice choice;
+  choice.name = "map.bt";
+  choice.value = "not written";
+  choice.reason = *problem + "; the other outputs are written";
+  choice.detail = "the map's box is [" + nedText(run.bounds.min()) + "] to [" +
+                  nedText(run.bounds.max()) + "] m, local to the mission origin " +
+                  nedText(run.mission.origin_ned_m) + " m";
+  choice.action =
+      "reconstruct a shorter part of the track (--first-frame, --last-frame) or "
+      "use larger voxels to get a map.bt";
+  choice.warning = true;
+  run.choose(choice);
+}
 
 class ReadStage : public Stage {
  public:
@@ -29,6 +54,7 @@ class ReadStage : public Stage {
                                                .frustumBounds(run.posed.front().T_world_sonar)
                                                .intersection(run.bounds)
                                          : run.bounds;
+    noteOctoMapReach(run);
     run.buffers = requireBoundedSizes(held.isEmpty() ? run.bounds : held, run.sonar, p.carve,
                                       run.pool.size(), run.memory.budget());
   }
