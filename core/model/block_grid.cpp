@@ -45,6 +45,13 @@ bool BlockGrid::voxelOf(const Eigen::Vector3d& p_world, Eigen::Vector3i& voxel) 
 }
 
 int BlockGrid::findBlock(const Eigen::Vector3i& block) const {
+  if (!dense_.empty()) {
+    const Eigen::Vector3i rel = block - dense_lo_;
+    if ((rel.array() < 0).any() || (rel.array() >= dense_dims_.array()).any()) {
+      return -1;
+    }
+    return dense_[denseCell(rel)];
+  }
   for (int axis = 0; axis < 3; ++axis) {
     if (block[axis] < -kKeyHalf || block[axis] >= kKeyHalf) {
       return -1;
@@ -63,8 +70,51 @@ int BlockGrid::addBlock(const Eigen::Vector3i& block) {
     bounds_.extend((block.cast<double>().array() + 1.0).matrix() * side);
     logits_.resize(logits_.size() + kBlockVoxels, empty_logit_);
     reflectance_.resize(reflectance_.size() + kBlockVoxels, 0.0f);
+    indexDensely(block, it->second);
   }
   return it->second;
+}
+
+std::size_t BlockGrid::denseCell(const Eigen::Vector3i& rel) const {
+  return (static_cast<std::size_t>(rel.z()) * static_cast<std::size_t>(dense_dims_.y()) +
+          static_cast<std::size_t>(rel.y())) *
+             static_cast<std::size_t>(dense_dims_.x()) +
+         static_cast<std::size_t>(rel.x());
+}
+
+void BlockGrid::indexDensely(const Eigen::Vector3i& block, int index) {
+  if (dense_given_up_) {
+    return;
+  }
+  const Eigen::Vector3i rel = block - dense_lo_;
+  const bool inside = !dense_.empty() && (rel.array() >= 0).all() &&
+                      (rel.array() < dense_dims_.array()).all();
+  if (!inside) {
+    // A box around every block with a margin of half its size on each side, so that a grid
+    // growing block by block rebuilds the table a logarithmic number of times.
+    Eigen::AlignedBox3i box(block);
+    for (const Eigen::Vector3i& b : block_coords_) {
+      box.extend(b);
+    }
+    const Eigen::Vector3i margin = (box.sizes() / 2).array() + 2;
+    const Eigen::Vector3i lo = box.min() - margin;
+    const Eigen::Vector3i dims = box.sizes() + 2 * margin + Eigen::Vector3i::Ones();
+    const std::int64_t cells = std::int64_t{dims.x()} * dims.y() * dims.z();
+    if (cells > kDenseCells) {
+      dense_given_up_ = true;
+      dense_.clear();
+      dense_.shrink_to_fit();
+      return;
+    }
+    dense_lo_ = lo;
+    dense_dims_ = dims;
+    dense_.assign(static_cast<std::size_t>(cells), -1);
+    for (std::size_t i = 0; i < block_coords_.size(); ++i) {
+      dense_[denseCell(block_coords_[i] - dense_lo_)] = static_cast<int>(i);
+    }
+    return;
+  }
+  dense_[denseCell(rel)] = index;
 }
 
 std::int64_t BlockGrid::voxelIndex(const Eigen::Vector3i& voxel) const {

@@ -73,7 +73,17 @@ class BlockGrid {
  private:
   double voxel_size_m_;
   float empty_logit_;
+  // Blocks are also found through a dense table over a box around them while that box holds at
+  // most kDenseCells blocks (a structure's band; the rays' many look-ups of absent blocks then
+  // cost an array read, not a hash); past it, through the hash alone.
+  static constexpr std::int64_t kDenseCells = std::int64_t{1} << 24;
+  void indexDensely(const Eigen::Vector3i& block, int index);
+  std::size_t denseCell(const Eigen::Vector3i& rel) const;  // rel: from dense_lo_
   std::unordered_map<std::int64_t, int> blocks_;
+  Eigen::Vector3i dense_lo_ = Eigen::Vector3i::Zero();
+  Eigen::Vector3i dense_dims_ = Eigen::Vector3i::Zero();
+  std::vector<int> dense_;
+  bool dense_given_up_ = false;
   std::vector<Eigen::Vector3i> block_coords_;
   Eigen::AlignedBox3d bounds_;
   std::vector<float> logits_;

@@ -72,9 +72,11 @@ void checkView(const SonarModel& sonar, const FrameView& view) {
 ForwardModel::ForwardModel(const SonarModel& sonar, ModelSettings settings, ThreadPool& pool)
     : sonar_(sonar), settings_(settings), pool_(pool) {
   if (!(settings_.elevation_step_rad > 0.0) || settings_.samples_per_bin < 1 ||
-      !(settings_.min_alpha >= 0.0) || !(settings_.min_transmittance >= 0.0)) {
+      !(settings_.min_alpha >= 0.0) || !(settings_.min_transmittance >= 0.0) ||
+      settings_.beam_stride < 1 || settings_.beam_offset < 0) {
     throw Error("forward model", "settings",
-                "expected a positive elevation step, >= 1 sample per bin and thresholds >= 0");
+                "expected a positive elevation step, >= 1 sample per bin, thresholds >= 0, a "
+                "beam stride >= 1 and an offset >= 0");
   }
 }
 
@@ -89,14 +91,17 @@ void ForwardModel::forEachRay(const BlockGrid& grid, const FrameView& view,
   const Eigen::Matrix3d R = view.T_world_sonar.linear();
   const Eigen::Vector3d origin = view.T_world_sonar.translation();
   Slots slots(pool_.size());
-  pool_.parallelFor(static_cast<std::size_t>(sonar_.cols()), 4,
+  const int stride = settings_.beam_stride;
+  const int first = settings_.beam_offset;
+  const int traced = first < sonar_.cols() ? (sonar_.cols() - first + stride - 1) / stride : 0;
+  pool_.parallelFor(static_cast<std::size_t>(traced), 4,
                     [&](std::size_t begin, std::size_t end) {
                       const unsigned slot = slots.take();
                       StencilReader reader(grid);
                       std::vector<RaySample> samples;
-                      for (auto b = begin; b < end; ++b) {
+                      for (auto n = begin; n < end; ++n) {
                         Ray ray;
-                        ray.beam = static_cast<int>(b);
+                        ray.beam = first + static_cast<int>(n) * stride;
                         ray.unit_scale = unit_scale;
                         ray.scale = view.gain * unit_scale;
                         for (int k = 0; k < fan.count; ++k) {

@@ -74,6 +74,9 @@ bool usesFastEngine(const Params& p) {
 bool refinesPoses(const Params& p) {
   return p.engine == Engine::Fast && p.pose_refinement.enabled;
 }
+bool fitsMap(const Params& p) {
+  return p.engine == Engine::Fast && p.fit.enabled;
+}
 bool buildsMesh(const Params& p) {
   return p.mesh_enabled;
 }
@@ -433,6 +436,33 @@ std::vector<ParamSpec> makeSchema() {
                .max = 8},
        .access = field([](auto& p) -> auto& { return p.pose_refinement.passes; }),
        .applies = refinesPoses},
+
+      // Model-based fit.
+      {.key = "fit.enabled",
+       .help = "experimental, fast engine: after carving, fit the carved band's occupancy and "
+               "reflectance to every frame by the speckle likelihood of the forward model, and "
+               "take the surface from the fitted map (slower; docs/model.md)",
+       .flag = "--fit",
+       .gui = {.group = "Fit", .label = "Fit the map to the frames"},
+       .access = field([](auto& p) -> auto& { return p.fit.enabled; }),
+       .applies = usesFastEngine},
+      {.key = "fit.passes",
+       .unit = "passes",
+       .range = {.min = 1.0, .max = 50.0},
+       .help = "fit: passes over every frame",
+       .flag = "--fit-passes",
+       .gui = {.group = "Fit", .label = "Passes", .advanced = true, .min = 1, .max = 50},
+       .access = field([](auto& p) -> auto& { return p.fit.passes; }),
+       .applies = fitsMap},
+      {.key = "fit.band_voxels",
+       .unit = "voxels",
+       .range = {.min = 1.0, .max = 16.0},
+       .help = "fit: half-thickness of the band around the carved surface that the fit may "
+               "change",
+       .flag = "--fit-band",
+       .gui = {.group = "Fit", .label = "Band", .advanced = true, .min = 1, .max = 16},
+       .access = field([](auto& p) -> auto& { return p.fit.band_voxels; }),
+       .applies = fitsMap},
 
       // Frames.
       {.key = "frames.first",

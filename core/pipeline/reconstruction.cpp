@@ -86,11 +86,16 @@ Pipeline::Pipeline(const Mission& mission, ReconstructionParams params, ThreadPo
                        ? nullptr
                        : std::make_shared<const NoiseModel>(NoiseModel::load(params_.noise_model))),
       pool_(pool),
-      stages_(standardStages()) {}
+      stages_(standardStages()) {
+  if (params_.fit.enabled && params_.engine == Engine::Fast) {
+    addStage(makeFitStage(), "surface");
+  }
+}
 
 bool Pipeline::evicts() const {
   return params_.evict_blocks && params_.engine == Engine::Fast && !earlier_map_ && carve_frames_ &&
-         !keep_whole_map_ && !params_.occlusion_aware_carving && !params_.pose_refinement.enabled;
+         !keep_whole_map_ && !params_.occlusion_aware_carving && !params_.pose_refinement.enabled &&
+         !params_.fit.enabled;
 }
 
 void Pipeline::addStage(std::shared_ptr<const Stage> stage, std::string_view after) {

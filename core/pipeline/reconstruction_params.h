@@ -13,6 +13,7 @@
 #include "carve/pose_refiner.h"
 #include "common/enum_names.h"
 #include "denoise/detector.h"
+#include "fit/map_fit_params.h"
 #include "mesh/surface_mesher.h"
 
 namespace YAML {
@@ -72,6 +73,8 @@ struct ReconstructionParams {
   ShadowCarving shadow_aware_carving = ShadowCarving::Auto;
   /// Fast engine: each frame aligned to the map carved so far before it carves (issue 15).
   PoseRefinementParams pose_refinement;
+  /// Fast engine, experimental: the carved map fitted to the frames (fit/map_fit.h).
+  MapFitParams fit;
   /// What the run may hold in memory, MiB (2^20 bytes); 0 = a share of the memory available
   /// when the run starts (pipeline/memory_budget.h). Past it the run stops with an Error.
   std::uint64_t memory_budget_mb = 0;

@@ -22,6 +22,8 @@ std::unique_ptr<Stage> makeChooseStage();
 std::unique_ptr<Stage> makeCarveStage();
 std::unique_ptr<Stage> makeSurfaceStage();
 std::unique_ptr<Stage> makeMeshStage();
+/// fit: only in runs with fit.enabled, after surface (Pipeline adds it).
+std::unique_ptr<Stage> makeFitStage();
 
 /// Where and how a run writes its outputs (reconstruct --out).
 struct OutputSettings {
