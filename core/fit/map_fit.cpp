@@ -23,7 +23,9 @@ constexpr double kMinReflectance = 0.1;
 constexpr double kMaxReflectance = 10.0;
 constexpr float kMinLogit = -12.0f;
 constexpr float kMaxLogit = 12.0f;
-constexpr int kGainFrames = 8;
+// Frames spread over the mission that set the background's floor and the gain and on which
+// the fit's figures are measured (before and after), so that they cost no full pass.
+constexpr int kSampleFrames = 16;
 // A step's gradient traces every second beam, the next step the others: half the rays a step,
 // every beam in two (neighbouring beams see nearly the same surface).
 constexpr int kStepBeamStride = 2;
@@ -111,8 +113,9 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
   const ForwardModel model(sonar_, settings, pool_);
 
   // The background, raised to a floor; the gain from the frames' energy where the map returns.
+  const std::vector<std::size_t> sampled = spread(frames.size(), kSampleFrames);
   std::vector<cv::Mat> sample;
-  for (const std::size_t k : spread(frames.size(), kGainFrames)) {
+  for (const std::size_t k : sampled) {
     sample.push_back(load(frames[k].index));
   }
   background.resize(static_cast<std::size_t>(sonar_.rows()), 0.0);
@@ -125,7 +128,7 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
   double observed = 0.0;
   double predicted = 0.0;
   for (std::size_t s = 0; s < sample.size(); ++s) {
-    view.T_world_sonar = frames[spread(frames.size(), kGainFrames)[s]].T_world_sonar;
+    view.T_world_sonar = frames[sampled[s]].T_world_sonar;
     const cv::Mat returned = model.predict(grid, view);
     const cv::Mat excess = cv::max(asDouble(sample[s]) - background_image, 0.0);
     cv::Mat where_returned;
@@ -146,12 +149,13 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
   const auto per_step = static_cast<std::size_t>(params_.frames_per_step);
   const std::size_t steps_per_pass = (frames.size() + per_step - 1) / per_step;
   const std::size_t total_steps = steps_per_pass * static_cast<std::size_t>(params_.passes);
-  const std::size_t work = frames.size() * static_cast<std::size_t>(params_.passes + 2);
+  const std::size_t work =
+      frames.size() * static_cast<std::size_t>(params_.passes) + 2 * sampled.size();
   std::size_t done = 0;
 
-  // One look at a frame: its figures, and the gradient when asked.
-  // Sum of |observed - background| over every frame, for the figures' ratio.
+  // Sum of |observed - background| over the sampled frames, for the figures' ratio.
   double returns = 0.0;
+  // One look at a frame: its figures, and the gradient when asked.
   auto look = [&](const ForwardModel& with, const MapFitFrame& frame, FitPassFigures& figures,
                   ModelGradient* gradient, bool first_look = false) {
     if (progress.cancelled()) {
@@ -172,13 +176,13 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
     progress.report("fit", ++done, work);
   };
   auto finish = [&](FitPassFigures figures) {
-    figures.nll_per_pixel /= static_cast<double>(frames.size()) * sonar_.rows() * sonar_.cols();
+    figures.nll_per_pixel /= static_cast<double>(sampled.size()) * sonar_.rows() * sonar_.cols();
     figures.unexplained /= std::max(returns, 1e-300);
     return figures;
   };
   FitPassFigures before;
-  for (const MapFitFrame& frame : frames) {
-    look(model, frame, before, nullptr, true);
+  for (const std::size_t k : sampled) {
+    look(model, frames[k], before, nullptr, true);
   }
   summary.before = finish(before);
 
@@ -198,9 +202,8 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
       for (std::size_t k = first; k < std::min(order.size(), first + per_step); ++k) {
         look(step_model, frames[order[k]], during, &gradient);
       }
-      const double share =
-          1.0 - (1.0 - kFinalLearningRateShare) * static_cast<double>(step) /
-                    static_cast<double>(std::max<std::size_t>(1, total_steps - 1));
+      const double share = 1.0 - (1.0 - kFinalLearningRateShare) * static_cast<double>(step) /
+                                     static_cast<double>(std::max<std::size_t>(1, total_steps - 1));
       ++step;
       logit_steps.step(grid.logits(), gradient.logits, fit.in_band, kLogitLearningRate * share,
                        kMinLogit, kMaxLogit);
@@ -208,7 +211,8 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
         gradient.reflectance[i] *= grid.reflectance()[i];  // d / d log(rho)
       }
       reflectance_steps.step(log_reflectance, gradient.reflectance, fit.in_band,
-                             kReflectanceLearningRate * share, std::log(kMinReflectance), std::log(kMaxReflectance));
+                             kReflectanceLearningRate * share, std::log(kMinReflectance),
+                             std::log(kMaxReflectance));
       for (std::size_t i = 0; i < log_reflectance.size(); ++i) {
         if (fit.in_band[i] != 0) {
           grid.reflectance()[i] = std::exp(log_reflectance[i]);
@@ -217,8 +221,8 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
     }
   }
   FitPassFigures after;
-  for (const MapFitFrame& frame : frames) {
-    look(model, frame, after, nullptr);
+  for (const std::size_t k : sampled) {
+    look(model, frames[k], after, nullptr);
   }
   summary.after = finish(after);
   return summary;

@@ -31,7 +31,7 @@ struct MapFitFrame {
 /// A frame's image (CV_32F power, the sonar's rows x cols) by its index in the mission.
 using FrameImageLoader = std::function<cv::Mat(std::size_t index)>;
 
-/// How well the map explains the frames, over one pass.
+/// How well the map explains the frames, on up to 16 frames spread over the mission.
 struct FitPassFigures {
   double nll_per_pixel = 0.0;  ///< mean speckle NLL per pixel
   /// Sum of |observed - predicted| over the sum of |observed - background|: the share of the

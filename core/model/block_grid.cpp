@@ -87,8 +87,8 @@ void BlockGrid::indexDensely(const Eigen::Vector3i& block, int index) {
     return;
   }
   const Eigen::Vector3i rel = block - dense_lo_;
-  const bool inside = !dense_.empty() && (rel.array() >= 0).all() &&
-                      (rel.array() < dense_dims_.array()).all();
+  const bool inside =
+      !dense_.empty() && (rel.array() >= 0).all() && (rel.array() < dense_dims_.array()).all();
   if (!inside) {
     // A box around every block with a margin of half its size on each side, so that a grid
     // growing block by block rebuilds the table a logarithmic number of times.

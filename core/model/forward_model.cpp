@@ -94,32 +94,30 @@ void ForwardModel::forEachRay(const BlockGrid& grid, const FrameView& view,
   const int stride = settings_.beam_stride;
   const int first = settings_.beam_offset;
   const int traced = first < sonar_.cols() ? (sonar_.cols() - first + stride - 1) / stride : 0;
-  pool_.parallelFor(static_cast<std::size_t>(traced), 4,
-                    [&](std::size_t begin, std::size_t end) {
-                      const unsigned slot = slots.take();
-                      StencilReader reader(grid);
-                      std::vector<RaySample> samples;
-                      for (auto n = begin; n < end; ++n) {
-                        Ray ray;
-                        ray.beam = first + static_cast<int>(n) * stride;
-                        ray.unit_scale = unit_scale;
-                        ray.scale = view.gain * unit_scale;
-                        for (int k = 0; k < fan.count; ++k) {
-                          ray.elevation_rad = fan.angle(k);
-                          ray.direction_sonar =
-                              rayDirection(sonar_.bearings().centre(ray.beam), ray.elevation_rad);
-                          ray.direction_world = R * ray.direction_sonar;
-                          ray.power = view.profile.power(ray.elevation_rad);
-                          ray.beam_weight = solidAngleWeight(ray.power, ray.elevation_rad);
-                          marchRay(reader, grid.voxelSize(), origin, ray.direction_world,
-                                   ray.direction_sonar, limits, samples);
-                          if (!samples.empty()) {
-                            body(ray, samples, slot);
-                          }
-                        }
-                      }
-                      slots.give(slot);
-                    });
+  pool_.parallelFor(static_cast<std::size_t>(traced), 4, [&](std::size_t begin, std::size_t end) {
+    const unsigned slot = slots.take();
+    StencilReader reader(grid);
+    std::vector<RaySample> samples;
+    for (auto n = begin; n < end; ++n) {
+      Ray ray;
+      ray.beam = first + static_cast<int>(n) * stride;
+      ray.unit_scale = unit_scale;
+      ray.scale = view.gain * unit_scale;
+      for (int k = 0; k < fan.count; ++k) {
+        ray.elevation_rad = fan.angle(k);
+        ray.direction_sonar = rayDirection(sonar_.bearings().centre(ray.beam), ray.elevation_rad);
+        ray.direction_world = R * ray.direction_sonar;
+        ray.power = view.profile.power(ray.elevation_rad);
+        ray.beam_weight = solidAngleWeight(ray.power, ray.elevation_rad);
+        marchRay(reader, grid.voxelSize(), origin, ray.direction_world, ray.direction_sonar, limits,
+                 samples);
+        if (!samples.empty()) {
+          body(ray, samples, slot);
+        }
+      }
+    }
+    slots.give(slot);
+  });
 }
 
 cv::Mat ForwardModel::predict(const BlockGrid& grid, const FrameView& view) const {

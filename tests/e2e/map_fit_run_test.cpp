@@ -25,8 +25,7 @@ nlohmann::json readJson(const std::filesystem::path& path) {
 TEST(MapFitRun, ExplainsMoreOfTheFramesAndKeepsTheSurfaceWithinTheVoxels) {
   test::ScratchDir dir;
   const auto mission = dir.path() / "riser";
-  ASSERT_EQ(runCli("simulate --scene riser --noise none --max-frames 16 --out " +
-                   quoted(mission))
+  ASSERT_EQ(runCli("simulate --scene riser --noise none --max-frames 16 --out " + quoted(mission))
                 .exit_code,
             0);
   const auto out = dir.path() / "fit";

@@ -89,9 +89,8 @@ class FitStage : public Stage {
     const MapFitSummary summary = fit.run(
         grid, frames, [&mission](std::size_t index) { return loadFrame(mission, index).image; },
         backgroundPerBin(run), progress);
-    SurfacePoints fitted = fittedSurface(grid.grid, run.sonar, frames,
-                                         run.params.fit, run.params.min_views,
-                                         run.pool, progress);
+    SurfacePoints fitted = fittedSurface(grid.grid, run.sonar, frames, run.params.fit,
+                                         run.params.min_views, run.pool, progress);
     run.choose(fitChoice(summary, result.surface.size(), fitted.size()));
     result.surface = std::move(fitted);
   }
