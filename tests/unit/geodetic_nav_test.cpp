@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "io/frame_source.h"
 #include "io/mission/mission.h"
+#include "io/mission/mission_writer.h"
 #include "io/mission/nav_csv.h"
 #include "io/mission/nav_import.h"
 #include "sonar/attitude.h"
@@ -109,6 +110,21 @@ TEST_F(GeodeticNav, EastingNorthingInTheMissionCrsWithAProjectedOrigin) {
   // Headings are from true north still: turned by the convergence at 5 E.
   EXPECT_NEAR(radToDeg(rollPitchYawFromQuaternion(m.nav.samples()[0].q_world_vehicle).yaw_rad),
               -1.364, 0.001);
+}
+
+TEST_F(GeodeticNav, AWrittenMissionKeepsItsCrs) {
+  writeText(mission_ / "nav.csv",
+            navWith("latitude_deg,longitude_deg", [](int) { return std::string("43,5"); }));
+  const Mission m = readMission(mission_);
+  MissionWriter writer(dir_.path() / "copy", m.name, m.sonar, m.mounting);
+  writer.addFrame(loadFrame(m, 0));
+  writer.finish(worldTrack(m), m.crs);
+  const Mission copy = readMission(dir_.path() / "copy");
+  EXPECT_EQ(copy.crs, "EPSG:32631");
+  // World NED on the grid, headings on grid north: read back as they were written.
+  EXPECT_NEAR(copy.nav.samples()[0].position_m.y(), kAt5E.x(), kCs2csPrinted_m);
+  EXPECT_NEAR(rollPitchYawFromQuaternion(copy.nav.samples()[0].q_world_vehicle).yaw_rad,
+              rollPitchYawFromQuaternion(m.nav.samples()[0].q_world_vehicle).yaw_rad, 1e-12);
 }
 
 TEST_F(GeodeticNav, NedNavigationWithADeclaredCrsKeepsItsNumbers) {
