@@ -139,6 +139,13 @@ TEST_F(GeodeticNavigation, SameSurfaceAsTheNedTwinWithTheCrsInEveryOutput) {
               std::string::npos)
         << file;
   }
+  const auto info = runCli("info " + quoted(path("geodetic")));
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  EXPECT_NE(info.output.find("CRS          EPSG:32631 (WGS 84 / UTM zone 31N)"), std::string::npos)
+      << info.output;
+  const auto info_json =
+      nlohmann::json::parse(runCli("info --json " + quoted(path("geodetic"))).output);
+  EXPECT_EQ(info_json["crs"], "EPSG:32631");
   // Local to an origin cs2cs puts at kGridOffsetEN (to 1e-7 m), the points are the twin's:
   // a heading left on true north would turn them by 0.5 deg, 9 mm per metre of range.
   const SurfacePoints ned = readSurfacePointsPly(path("out-ned") / "surface_points.ply");
