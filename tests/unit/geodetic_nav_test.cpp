@@ -253,6 +253,27 @@ TEST(GeodeticNavMapping, LatitudeLongitudeColumnsWithAMappingAndItsCrs) {
   EXPECT_NEAR(by_header.samples()[0].position_m.x(), kAt3E.y(), kCs2csPrinted_m);
 }
 
+TEST(GeodeticNavMapping, EmptyTruncatedAndCorruptGeodeticLogs) {
+  NavMapping m;
+  setNavMapping(m, "columns.time", "t", "--nav-column");
+  setNavMapping(m, "columns.latitude", "lat", "--nav-column");
+  setNavMapping(m, "columns.longitude", "lon", "--nav-column");
+  setNavMapping(m, "columns.depth", "z", "--nav-column");
+  for (const char* angle : {"columns.roll", "columns.pitch", "columns.yaw"}) {
+    setNavMapping(m, angle, "", "--nav-column");  // no attitude columns: 0
+  }
+  const auto read = [&](const std::string& text) { return importNavCsvText(text, "log.csv", m); };
+  expectError([&] { read(""); }, {"log.csv"});
+  expectError([&] { read("t,lat,lon,z\n"); }, {"log.csv", "no navigation samples"});
+  expectError([&] { read("t,lat,lon,z\n0,43,3,1\n1,43.1"); }, {"log.csv: line 3"});
+  expectError([&] { read("t,lat,lon,z\n0,43,3,1\n1,43.1,3e,1\n"); },
+              {"log.csv: line 3", "'lon'", "expected a finite number"});
+  expectError([&] { read("t,lat,lon,z\n0,-91,3,1\n"); },
+              {"log.csv: line 2", "latitude -91 deg: expected WGS84 degrees within -90..90"});
+  expectError([&] { read("t,lat,z\n0,43,1\n"); }, {"log.csv: line 1", "missing column 'lon'"});
+  EXPECT_EQ(read("t,lat,lon,z\n0,43,3,1\n").samples().size(), 1u);
+}
+
 TEST(GeodeticNavMapping, BadCrsAndTwoKindsInAMapping) {
   test::ScratchDir dir;
   writeText(dir.path() / "map.yaml",
