@@ -9,6 +9,8 @@ packages=(
   # core libraries
   libeigen3-dev liboctomap-dev libembree-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libopencv-core-dev libopencv-imgproc-dev libpng-dev zlib1g-dev
+  # coordinate reference systems (core/geo/): PROJ and its database of CRSs
+  libproj-dev proj-data
   # the tests read and write pictures with OpenCV too
   libopencv-imgcodecs-dev
   # ROS 2 bags: SQLite3 storage, lz4 and zstd chunks of MCAP files
@@ -18,6 +20,8 @@ packages=(
   qt6-base-dev libqt6opengl6-dev libgl-dev libgl1-mesa-dri
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools assimp-utils
+  # PROJ's cs2cs: the georeferenced export is checked against it (tests/e2e/geodetic_nav_test.cpp)
+  proj-bin
   # the Debian package (packaging/README.md): CPack's DEB generator, man pages, the package test
   dpkg-dev help2man lintian desktop-file-utils appstream man-db
 )

@@ -15,7 +15,7 @@ void addExportCommand(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand(
       "export", "Convert a reconstruction's mesh or points to another format, frame or crop");
   struct Options {
-    std::string reconstruction, out, format, frame = "ned";
+    std::string reconstruction, out, format, frame = "ned", crs;
     std::vector<double> origin, crop;
     bool points = false;
     bool add_origin = false;
@@ -30,6 +30,10 @@ void addExportCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--origin", o->origin, "Origin subtracted first: N E D (m)")->expected(3);
   cmd->add_option("--crop", o->crop, "Keep only inside the box N0 E0 D0 N1 E1 D1 (m, NED)")
       ->expected(6);
+  cmd->add_option("--crs", o->crs,
+                  "World coordinates in this projected CRS (EPSG:NNNN or a PROJ string): x "
+                  "easting, y northing, z up, in double (PLY, OBJ; not STL); needs a "
+                  "reconstruction with a CRS (its PLY comment crs)");
   cmd->add_flag("--points", o->points, "Export the surface points instead of the mesh (PLY)");
   cmd->add_flag("--add-origin", o->add_origin,
                 "World coordinates: add back the mission origin the reconstruction is local to "
@@ -61,14 +65,17 @@ void addExportCommand(CLI::App& app, int& exit_code) {
     const std::filesystem::path input = folder / (o->points ? "surface_points.ply" : "mesh.ply");
     options.mission_origin_ned_m = plyOrigin(input);
     options.add_mission_origin = o->add_origin;
+    options.mission_crs = plyCrs(input);
+    options.target_crs = o->crs;
     if (o->points) {
       exportPoints(readSurfacePointsPly(input), o->out, options);
     } else {
       exportMesh(readMeshPly(input), o->out, options);
     }
     std::cout << "wrote " << o->out << " (" << options.format << ", " << options.frame << " frame, "
-              << (o->add_origin ? "world coordinates"
-                                : "local to the origin " + nedText(options.mission_origin_ned_m))
+              << (!o->crs.empty() ? "world coordinates in " + o->crs
+                  : o->add_origin ? "world coordinates"
+                                  : "local to the origin " + nedText(options.mission_origin_ned_m))
               << ")\n";
     exit_code = 0;
   });

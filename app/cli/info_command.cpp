@@ -11,6 +11,7 @@
 #include "cli/source_flags.h"
 #include "common/angles.h"
 #include "common/error.h"
+#include "geo/crs.h"
 #include "io/frame_source.h"
 #include "io/import.h"
 #include "io/mission/mission.h"
@@ -21,6 +22,7 @@
 #include "pipeline/frame_stage.h"
 #include "pipeline/reconstruction.h"
 #include "sonar/bearing_deblur.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve::cli {
 namespace {
@@ -248,6 +250,10 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
       j["source"] = mission.source->kind();
       j["warnings"] = mission.warnings;
       j["contents"] = mission.contents;
+      if (!mission.crs.empty()) {  // absent for NED navigation without a CRS, as before
+        j["crs"] = mission.crs;
+        j["origin_ned_m"] = vectorJson(mission.origin_ned_m);
+      }
       std::cout << j.dump(2) << "\n";
     } else {
       std::printf("Mission      %s (%s, %s)\n", summary.name.c_str(),
@@ -260,6 +266,13 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
                         : "");
       }
       printFrameTimes(mission);
+      if (!mission.crs.empty()) {
+        std::printf(
+            "CRS          %s (%s): world north, east = its northing, easting; mission "
+            "origin %s\n",
+            mission.crs.c_str(), crsName(mission.crs).c_str(),
+            nedText(mission.origin_ned_m).c_str());
+      }
       for (const std::string& line : mission.contents) {
         std::printf("Recording    %s\n", line.c_str());
       }

@@ -947,15 +947,16 @@ bool MainWindow::exportTo(Export kind, const QString& file) {
       // The result is local to its mission's origin: the files say so (docs/conventions.md).
       const Eigen::Vector3d origin =
           mission_ ? mission_->origin_ned_m : Eigen::Vector3d::Zero().eval();
+      const std::string crs = mission_ ? mission_->crs : std::string();
       switch (kind) {
         case Export::SurfacePly:
-          writeSurfacePointsPly(result_->surface, path, origin);
+          writeSurfacePointsPly(result_->surface, path, origin, crs);
           break;
         case Export::MapBt:
           if (!result_->map) {
             throw Error(path.string(), "", "the reference engine keeps no map to export");
           }
-          writeOccupancyBt(*result_->map, path, origin);
+          writeOccupancyBt(*result_->map, path, origin, crs);
           break;
         case Export::MeshPly:
         case Export::MeshStl: {
@@ -965,6 +966,7 @@ bool MainWindow::exportTo(Export kind, const QString& file) {
           ExportOptions options;
           options.format = kind == Export::MeshPly ? "ply" : "stl";
           options.mission_origin_ned_m = origin;
+          options.mission_crs = crs;
           exportMesh(result_->mesh, path, options);
           break;
         }

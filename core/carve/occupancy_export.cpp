@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "common/number_text.h"
+#include "geo/crs.h"
 #include "io/files/atomic_file.h"
 #include "sonar/mission_origin.h"
 
@@ -179,7 +180,7 @@ std::optional<std::string> octoMapKeyProblem(const Eigen::AlignedBox3d& box, dou
 }
 
 void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path,
-                      const Eigen::Vector3d& origin_ned_m) {
+                      const Eigen::Vector3d& origin_ned_m, const std::string& crs) {
   if (const auto problem = octoMapKeyProblem(map.bounds(), map.voxelSize())) {
     throw Error(path.string(), "", "cannot write an OctoMap file: " + *problem);
   }
@@ -187,11 +188,12 @@ void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path,
   for (std::size_t page = 0; page < map.pageCount(); ++page) {
     collectOccupancyBlocks(map, page, blocks);
   }
-  writeOccupancyBt(std::move(blocks), map.voxelSize(), path, origin_ned_m);
+  writeOccupancyBt(std::move(blocks), map.voxelSize(), path, origin_ned_m, crs);
 }
 
 void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
-                      const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m) {
+                      const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m,
+                      const std::string& crs) {
   std::sort(blocks.begin(), blocks.end(),
             [](const OccupancyBlock& a, const OccupancyBlock& b) { return a.morton < b.morton; });
   SortedOccupancy sorted;
@@ -200,11 +202,12 @@ void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
     sorted.mortons.push_back(b.morton);
   }
   sorted.read = [&blocks](std::size_t n, OccupancyBlock& out) { out = blocks[n]; };
-  writeOccupancyBt(sorted, voxel_size_m, path, origin_ned_m);
+  writeOccupancyBt(sorted, voxel_size_m, path, origin_ned_m, crs);
 }
 
 void writeOccupancyBt(const SortedOccupancy& blocks, double voxel_size_m,
-                      const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m) {
+                      const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m,
+                      const std::string& crs) {
   BtWriter writer(blocks);
   std::string data;
   if (!blocks.mortons.empty()) {
@@ -216,6 +219,9 @@ void writeOccupancyBt(const SortedOccupancy& blocks, double voxel_size_m,
          << "# (feel free to add / change comments, but leave the first line as it is!)\n#\n";
   if (!origin_ned_m.isZero()) {
     header << "# " << originComment(origin_ned_m) << "\n";
+  }
+  if (!crs.empty()) {
+    header << "# " << crsComment(crs) << "\n";
   }
   header << "id OcTree\nsize " << writer.nodes << "\nres " << voxel_size_m << "\ndata\n";
   data.insert(0, header.str());

@@ -53,16 +53,20 @@ void collectOccupancyBlocks(const VoxelMap& map, std::size_t page,
 
 /// Writes atomically; throws Error on failure, keeping any previous file, and when the map's
 /// box does not fit OctoMap's keys (octoMapKeyProblem). A map local to a mission origin that is
-/// not zero says so in a header comment (`# origin_ned_m N E D ...`, which OctoMap skips).
+/// not zero says so in a header comment (`# origin_ned_m N E D ...`, which OctoMap skips), and
+/// a mission's CRS (`crs`, when not empty) in another (`# crs EPSG:32631`).
 void writeOccupancyBt(const VoxelMap& map, const std::filesystem::path& path,
-                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
+                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero(),
+                      const std::string& crs = "");
 /// The same from collected blocks (any order), of a map of `voxel_size_m` whose box fits
 /// OctoMap's keys (the caller checks it: blocks beyond have wrapped keys).
 void writeOccupancyBt(std::vector<OccupancyBlock> blocks, double voxel_size_m,
                       const std::filesystem::path& path,
-                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
+                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero(),
+                      const std::string& crs = "");
 void writeOccupancyBt(const SortedOccupancy& blocks, double voxel_size_m,
                       const std::filesystem::path& path,
-                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
+                      const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero(),
+                      const std::string& crs = "");
 
 }  // namespace sonarcarve

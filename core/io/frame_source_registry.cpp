@@ -89,7 +89,8 @@ Mission recordingMission(const std::filesystem::path& path, const SonarModel& so
                   nullptr,
                   {},
                   {},
-                  Eigen::Vector3d::Zero()};
+                  Eigen::Vector3d::Zero(),
+                  {}};
   for (std::size_t k = 0; k < times_s.size(); ++k) {
     mission.frames.push_back({times_s[k], sonar.id(), label(k), 0});
   }
@@ -123,8 +124,9 @@ void placeMissionNearOrigin(Mission& mission) {
 
 void applyOpenOptions(Mission& mission, const OpenOptions& options) {
   if (!options.nav_csv.empty()) {
-    mission.nav = importNavCsv(options.nav_csv, options.nav_mapping);
+    mission.nav = importNavCsv(options.nav_csv, options.nav_mapping, &mission.crs);
     mission.nav_file = options.nav_csv.string();
+    mission.origin_ned_m = Eigen::Vector3d::Zero();  // the recording's own navigation's
   }
   if (!options.mounting.empty()) {
     mission.mounting = readMountingYaml(options.mounting);

@@ -149,9 +149,9 @@ namespace {
 // Writes a mission folder (new or empty) of `count` frames, each as power (loadFrame's); a
 // frame that cannot be read is reported in `report` and left out.
 void writeMissionFolder(const ImportRequest& request, const SonarModel& sonar,
-                        const Mounting& mounting, const NavTrack& nav, std::size_t count,
-                        const std::function<Frame(std::size_t)>& frame_at, Progress& progress,
-                        ImportReport& report) {
+                        const Mounting& mounting, const NavTrack& nav, const std::string& crs,
+                        std::size_t count, const std::function<Frame(std::size_t)>& frame_at,
+                        Progress& progress, ImportReport& report) {
   std::error_code ec;
   if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_directory(request.out, ec)) {
     throw Error(request.out.string(), "", "is a file: expected a new or empty folder");
@@ -179,7 +179,7 @@ void writeMissionFolder(const ImportRequest& request, const SonarModel& sonar,
   if (writer.frameCount() == 0) {
     throw Error(request.log.string(), "", "no frame could be decoded");
   }
-  writer.finish(nav);
+  writer.finish(nav, crs);
   progress.report("writing frames", count, count);
   report.frames_written = writer.frameCount();
 }
@@ -207,12 +207,13 @@ ImportReport importOculusToMission(const ImportRequest& request, Progress& progr
   const Mounting mounting =
       request.mounting_yaml.empty() ? Mounting{} : readMountingYaml(request.mounting_yaml);
   std::optional<NavTrack> nav;
+  std::string crs;  // of geodetic or projected navigation's grid
   if (request.nav_csv.empty()) {
     nav = stationaryTrack(plan.frame_times_s);
     report.warnings.push_back(
         "no navigation given: the vehicle is stationary at the origin with zero attitude");
   } else {
-    nav = importNavCsv(request.nav_csv, request.nav_mapping);
+    nav = importNavCsv(request.nav_csv, request.nav_mapping, &crs);
   }
   for (double t : plan.frame_times_s) {
     report.frames_outside_nav += nav->covers(t) ? 0 : 1;
@@ -223,7 +224,7 @@ ImportReport importOculusToMission(const ImportRequest& request, Progress& progr
                               "offset): they cannot be placed in the world");
   }
   writeMissionFolder(
-      request, plan.sonar, mounting, *nav, plan.pings.size(),
+      request, plan.sonar, mounting, *nav, crs, plan.pings.size(),
       [&](std::size_t k) {
         // As power, which the writer turns back into the sonar's own counts.
         cv::Mat image = log.decode(plan.pings[k]).image;
@@ -250,8 +251,9 @@ ImportReport importRecordingToMission(const ImportRequest& request, const OpenOp
     report.frames_outside_nav += mission.nav.covers(frame.time_s) ? 0 : 1;
   }
   writeMissionFolder(
-      request, mission.sonar, mission.mounting, worldTrack(mission), mission.frames.size(),
-      [&](std::size_t k) { return loadFrame(mission, k); }, progress, report);
+      request, mission.sonar, mission.mounting, worldTrack(mission), mission.crs,
+      mission.frames.size(), [&](std::size_t k) { return loadFrame(mission, k); }, progress,
+      report);
   return report;
 }
 

@@ -7,6 +7,8 @@
 
 #include "common/error.h"
 #include "common/number_text.h"
+#include "geo/crs.h"
+#include "geo/crs_transform.h"
 #include "io/files/atomic_file.h"
 #include "io/mesh/ply_check.h"
 #include "io/mesh/point_cloud_ply.h"
@@ -15,23 +17,65 @@
 namespace sonarcarve {
 namespace {
 
-// What is added to a local position before the frame: the mission origin, for world output.
-Eigen::Vector3d addedOrigin(const ExportOptions& o) {
-  return o.add_mission_origin ? o.mission_origin_ned_m : Eigen::Vector3d::Zero();
+// World coordinates out: the mission origin added back (and, for a target CRS, projected).
+bool worldOutput(const ExportOptions& o) {
+  return o.add_mission_origin || !o.target_crs.empty();
 }
 
-// A position in the output frame, in double. Zero offsets are not added, so that a local
-// export keeps every float to the bit (a -0 stays -0).
-Eigen::Vector3d toFrame(const Eigen::Vector3f& p_local, const ExportOptions& o) {
-  Eigen::Vector3d q = p_local.cast<double>();
-  if (o.add_mission_origin && !o.mission_origin_ned_m.isZero()) {
-    q += o.mission_origin_ned_m;
-  }
-  if (!o.origin_ned_m.isZero()) {
-    q -= o.origin_ned_m;
-  }
-  return o.frame == "zup" ? Eigen::Vector3d(q.y(), q.x(), -q.z()) : q;
+// What is added to a local position before the frame: the mission origin, for world output.
+Eigen::Vector3d addedOrigin(const ExportOptions& o) {
+  return worldOutput(o) ? o.mission_origin_ned_m : Eigen::Vector3d::Zero();
 }
+
+// Local positions and directions to the output frame: NED or Z-up, local or world, or world
+// in a target CRS through PROJ.
+class OutputFrame {
+ public:
+  explicit OutputFrame(const ExportOptions& o) : o_(o) {
+    if (!o.target_crs.empty()) {
+      to_target_.emplace(o.mission_crs, o.target_crs, "export", "crs");
+    }
+  }
+
+  // In double. Zero offsets are not added, so that a local export keeps every float to the
+  // bit (a -0 stays -0).
+  Eigen::Vector3d position(const Eigen::Vector3f& p_local) const {
+    Eigen::Vector3d q = p_local.cast<double>();
+    if (worldOutput(o_) && !o_.mission_origin_ned_m.isZero()) {
+      q += o_.mission_origin_ned_m;
+    }
+    if (to_target_) {
+      return projected(q);
+    }
+    if (!o_.origin_ned_m.isZero()) {
+      q -= o_.origin_ned_m;
+    }
+    return o_.frame == "zup" ? Eigen::Vector3d(q.y(), q.x(), -q.z()) : q;
+  }
+
+  // Easting, northing and up of the target CRS's axes, as zup: the grids' convergence between
+  // the mission's CRS and the target's (a fraction of a degree) is not applied to normals.
+  Eigen::Vector3f direction(const Eigen::Vector3f& d_ned) const {
+    return o_.frame == "zup" || to_target_ ? Eigen::Vector3f(d_ned.y(), d_ned.x(), -d_ned.z())
+                                           : d_ned;
+  }
+
+ private:
+  // World NED on the mission's grid to (easting, northing, up) in the target CRS.
+  Eigen::Vector3d projected(const Eigen::Vector3d& q_world) const {
+    const auto xy = to_target_->apply({q_world.y(), q_world.x(), 0.0});
+    if (!xy) {
+      throw Error("export", "crs",
+                  "PROJ cannot place the world point " + nedText(q_world) + " of " +
+                      o_.mission_crs + " in " + o_.target_crs + " (" + to_target_->lastError() +
+                      "): expected a target CRS whose area holds the map");
+    }
+    return {xy->x(), xy->y(), -q_world.z()};
+  }
+
+  const ExportOptions& o_;
+  std::optional<CrsTransform> to_target_;
+};
 
 bool insideCrop(const Eigen::Vector3f& p_local, const ExportOptions& o) {
   return !o.crop_ned_m || o.crop_ned_m->contains(p_local.cast<double>() + addedOrigin(o));
@@ -39,11 +83,20 @@ bool insideCrop(const Eigen::Vector3f& p_local, const ExportOptions& o) {
 
 // The origin to add back to what the file holds to get world NED (its PLY comment), or zero.
 Eigen::Vector3d fileOrigin(const ExportOptions& o) {
-  return (o.add_mission_origin ? Eigen::Vector3d::Zero() : o.mission_origin_ned_m) + o.origin_ned_m;
+  return (worldOutput(o) ? Eigen::Vector3d::Zero() : o.mission_origin_ned_m) + o.origin_ned_m;
 }
 
-Eigen::Vector3f directionToFrame(const Eigen::Vector3f& d_ned, const ExportOptions& o) {
-  return o.frame == "zup" ? Eigen::Vector3f(d_ned.y(), d_ned.x(), -d_ned.z()) : d_ned;
+// The header comments after the origin's: the CRS of what the file holds, and for a target
+// CRS its axes and the mission origin (which the coordinates are not local to).
+std::vector<std::string> placeComments(const ExportOptions& o) {
+  if (o.target_crs.empty()) {
+    return o.mission_crs.empty() ? std::vector<std::string>{}
+                                 : std::vector<std::string>{crsComment(o.mission_crs)};
+  }
+  return {crsComment(o.target_crs),
+          "axes x easting, y northing, z up (= -depth), metres, in that crs",
+          "mission origin (north east down) " + nedText(o.mission_origin_ned_m) +
+              " on the grid of " + o.mission_crs + "; these coordinates are not local to it"};
 }
 
 // Vertices (with normals for a mesh) and triangles in the output frame, cropped.
@@ -56,19 +109,22 @@ struct Prepared {
   bool world_double = false;  ///< positions written as double
   std::string kind;           ///< "mesh" or "points", for the header's first comment
   Eigen::Vector3d origin_comment = Eigen::Vector3d::Zero();
+  std::vector<std::string> place_comments;  ///< CRS, axes
 };
 
 Prepared preparedFor(const ExportOptions& o, const char* kind) {
   Prepared out;
-  out.world_double = o.add_mission_origin;
+  out.world_double = worldOutput(o);
   out.kind = kind;
   out.origin_comment = fileOrigin(o);
+  out.place_comments = placeComments(o);
   return out;
 }
 
 // The mesh in the output frame, cropped; vertices no triangle uses are dropped.
 Prepared prepared(const Mesh& mesh, const ExportOptions& o) {
   Prepared out = preparedFor(o, "mesh");
+  const OutputFrame frame(o);
   std::vector<std::int64_t> remap(mesh.vertices.size(), -1);
   for (const auto& t : mesh.triangles) {
     if (!insideCrop(mesh.vertices[t[0]], o) || !insideCrop(mesh.vertices[t[1]], o) ||
@@ -80,8 +136,8 @@ Prepared prepared(const Mesh& mesh, const ExportOptions& o) {
       const std::uint32_t v = t[static_cast<std::size_t>(k)];
       if (remap[v] < 0) {
         remap[v] = static_cast<std::int64_t>(out.positions.size());
-        out.positions.push_back(toFrame(mesh.vertices[v], o));
-        out.normals.push_back(directionToFrame(mesh.normals[v], o));
+        out.positions.push_back(frame.position(mesh.vertices[v]));
+        out.normals.push_back(frame.direction(mesh.normals[v]));
         out.intensity.push_back(mesh.intensity[v]);
         out.views.push_back(mesh.views[v]);
       }
@@ -94,9 +150,10 @@ Prepared prepared(const Mesh& mesh, const ExportOptions& o) {
 
 Prepared prepared(const SurfacePoints& points, const ExportOptions& o) {
   Prepared out = preparedFor(o, "points");
+  const OutputFrame frame(o);
   for (const SurfacePoint& p : points) {
     if (insideCrop(p.position_m, o)) {
-      out.positions.push_back(toFrame(p.position_m, o));
+      out.positions.push_back(frame.position(p.position_m));
       out.intensity.push_back(p.intensity);
       out.views.push_back(p.views);
     }
@@ -123,6 +180,9 @@ std::string plyText(const Prepared& m, bool ascii) {
       << "comment SonarCarve " << m.kind << ", metres\n";
   if (!m.origin_comment.isZero()) {
     out << "comment " << originComment(m.origin_comment) << "\n";
+  }
+  for (const std::string& comment : m.place_comments) {
+    out << "comment " << comment << "\n";
   }
   out << "element vertex " << m.positions.size() << "\n";
   for (const char* axis : {"x", "y", "z"}) {
@@ -215,6 +275,9 @@ std::string objText(const Prepared& m) {
   if (!m.origin_comment.isZero()) {
     out << "# " << originComment(m.origin_comment) << "\n";
   }
+  for (const std::string& comment : m.place_comments) {
+    out << "# " << comment << "\n";
+  }
   for (const auto& v : m.positions) {
     out << "v ";
     writeCoordinates(out, v, m.world_double);
@@ -233,6 +296,29 @@ std::string objText(const Prepared& m) {
   return out.str();
 }
 
+// A target CRS: a projected one in metres, a mission with a CRS to project from, a format
+// that holds double, world coordinates as they are (no frame, origin or added origin of ours).
+void validateTarget(const ExportOptions& o) {
+  if (const auto problem = gridCrsProblem(o.target_crs)) {
+    throw Error("export", "crs", *problem);
+  }
+  if (o.mission_crs.empty()) {
+    throw Error("export", "crs",
+                "the reconstruction has no CRS (its navigation was NED without one): expected a "
+                "mission with latitude/longitude navigation or crs: in its mission.yaml");
+  }
+  if (o.format == "stl") {
+    throw Error("export", "format stl",
+                "STL holds float32 coordinates, which keep only metres at a CRS's eastings and "
+                "northings: expected ply, ply-ascii or obj with a crs");
+  }
+  if (o.frame != "ned" || !o.origin_ned_m.isZero() || o.add_mission_origin) {
+    throw Error("export", "crs",
+                "a CRS's coordinates are easting, northing, up as they are: expected no frame, "
+                "origin or add-origin with it");
+  }
+}
+
 }  // namespace
 
 void ExportOptions::validate() const {
@@ -244,6 +330,9 @@ void ExportOptions::validate() const {
   }
   if (!mission_origin_ned_m.allFinite() || !origin_ned_m.allFinite()) {
     throw Error("export", "origin", "expected finite origins (metres, NED)");
+  }
+  if (!target_crs.empty()) {
+    validateTarget(*this);
   }
   if (add_mission_origin && format == "stl" && !mission_origin_ned_m.isZero()) {
     throw Error("export", "format stl",

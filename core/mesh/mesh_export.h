@@ -11,7 +11,11 @@
 // stay small. A PLY whose coordinates are not world NED minus nothing carries the origin to add
 // back in a header comment (`origin_ned_m N E D`). An optional crop box (NED, in the
 // coordinates before the frame and the subtracted origin) keeps the triangles whose three
-// vertices are inside it. Every file is written to a temporary name and renamed: a failure
+// vertices are inside it. A mission with a CRS (the grid its world frame is) has it in a
+// header comment (`crs EPSG:32631`). `target_crs` writes world coordinates in another
+// projected CRS through PROJ: x easting, y northing, z up (= -depth), in double (PLY, OBJ;
+// STL refused), with that CRS and the mission origin in header comments (docs/formats.md,
+// "Georeferenced export"). Every file is written to a temporary name and renamed: a failure
 // keeps the previous file.
 #pragma once
 
@@ -34,6 +38,10 @@ struct ExportOptions {
   Eigen::Vector3d mission_origin_ned_m = Eigen::Vector3d::Zero();
   /// Write world coordinates: the mission origin added back, in double.
   bool add_mission_origin = false;
+  /// The projected CRS whose grid the world frame is (the mission's); empty: none.
+  std::string mission_crs;
+  /// Write world coordinates in this projected CRS (easting, northing, up); empty: NED as above.
+  std::string target_crs;
   void validate() const;
 };
 

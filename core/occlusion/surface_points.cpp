@@ -1,5 +1,6 @@
 #include "occlusion/surface_points.h"
 
+#include "geo/crs.h"
 #include "io/mesh/point_cloud_ply.h"
 #include "sonar/mission_origin.h"
 
@@ -15,10 +16,13 @@ std::vector<Eigen::Vector3f> positionsOf(const SurfacePoints& points) {
 }
 
 void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path,
-                           const Eigen::Vector3d& origin_ned_m) {
+                           const Eigen::Vector3d& origin_ned_m, const std::string& crs) {
   PointCloud cloud;
   if (!origin_ned_m.isZero()) {
     cloud.comments.push_back(originComment(origin_ned_m));
+  }
+  if (!crs.empty()) {
+    cloud.comments.push_back(crsComment(crs));
   }
   std::vector<float>& intensity = cloud.properties["intensity"];
   std::vector<std::uint32_t> views;

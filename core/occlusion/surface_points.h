@@ -24,8 +24,10 @@ std::vector<Eigen::Vector3f> positionsOf(const SurfacePoints& points);
 /// Binary PLY with vertex properties x, y, z (float), intensity (float), views (uint), and a
 /// header comment with the mission origin when it is not zero (io/mesh/point_cloud_ply.h).
 /// Atomic: a failure keeps the previous file.
+/// A mission with a CRS (`crs`, not empty) has it in a comment too (geo/crs.h).
 void writeSurfacePointsPly(const SurfacePoints& points, const std::filesystem::path& path,
-                           const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero());
+                           const Eigen::Vector3d& origin_ned_m = Eigen::Vector3d::Zero(),
+                           const std::string& crs = "");
 /// Reads x, y, z (and intensity, views when present) of a PLY point cloud.
 SurfacePoints readSurfacePointsPly(const std::filesystem::path& path);
 

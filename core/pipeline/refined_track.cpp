@@ -106,7 +106,9 @@ nlohmann::json poseRefinementReport(const Mission& mission,
   const auto truth_file = mission.folder / "ground_truth_poses.csv";
   if (!refinement.empty() && std::filesystem::is_regular_file(truth_file, ec)) {
     // The truth is in the world frame, as the mission's navigation was read.
-    const NavTrack truth = translatedTrack(readNavCsv(truth_file), -mission.origin_ned_m);
+    std::string crs = mission.crs;  // a georeferenced mission's truth may be geodetic too
+    const NavTrack truth = translatedTrack(
+        crs.empty() ? readNavCsv(truth_file) : readNavCsv(truth_file, crs), -mission.origin_ned_m);
     const auto block = [](const TrackError& e) {
       return nlohmann::json{{"rms_position_m", e.rms_position_m},
                             {"rms_heading_deg", e.rms_heading_deg},

@@ -31,6 +31,9 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                            {"carve_ms_per_frame_median", result.carve_ms_median},
                            {"occlusion_ms_per_frame", result.occlusion_ms_per_frame},
                            {"total_s", result.total_s}};
+  if (!mission.crs.empty()) {  // absent for NED navigation without a CRS, as before
+    report["crs"] = mission.crs;
+  }
   nlohmann::json choices = nlohmann::json::array();
   for (const RunChoice& c : result.choices) {
     choices.push_back({{"name", c.name},

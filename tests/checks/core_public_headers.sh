@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Proves the header rules of core/CMakeLists.txt: core's public headers (every header outside a
-# module's internal/ folder) include no internal header and no VTK, OctoMap or Embree header;
+# module's internal/ folder) include no internal header and no VTK, OctoMap, Embree or PROJ header;
 # app/ and widgets/ include no internal header; only the simulator itself, the command line
 # and tests include sim/.
 set -euo pipefail
@@ -28,12 +28,12 @@ include='^\s*#\s*include\s*[<"]'
 mapfile -t public_headers < <(find core -name '*.h' -not -path '*/internal/*' | sort)
 offending=()
 for header in "${public_headers[@]}"; do
-  if grep -nHE "${include}([^\">]*/)?internal/|${include}(vtk|octomap/|embree)" "$header"; then
+  if grep -nHE "${include}([^\">]*/)?internal/|${include}(vtk|octomap/|embree|proj\.h)" "$header"; then
     is_pending "$header" && echo "  (pending: $header)" || offending+=("$header")
   fi
 done
 [ ${#offending[@]} -eq 0 ] ||
-  fail "public core headers include an internal, VTK, OctoMap or Embree header: ${offending[*]}"
+  fail "public core headers include an internal, VTK, OctoMap, Embree or PROJ header: ${offending[*]}"
 
 if grep -rnE "${include}([^\">]*/)?internal/" app widgets; then
   fail "app/ or widgets/ include a core internal header"
@@ -46,5 +46,5 @@ fi
 for p in "${pending[@]}"; do
   [ -e "$p" ] || echo "note: $p has moved: remove it from the pending list of $0"
 done
-[ $status -eq 0 ] && echo "OK: public core headers keep VTK, OctoMap, Embree and internals out"
+[ $status -eq 0 ] && echo "OK: public core headers keep VTK, OctoMap, Embree, PROJ and internals out"
 exit $status

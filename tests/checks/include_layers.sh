@@ -11,13 +11,14 @@ cd "$1"
 declare -A layer=(
   [common]=0
   [sonar]=1
-  [io]=2
-  [geometry]=3 [denoise]=3
-  [carve]=4 [eval]=4 [model]=4
-  [occlusion]=5 [sim]=5
-  [mesh]=6 [fit]=6
-  [pipeline]=7
-  [session]=8
+  [geo]=2
+  [io]=3
+  [geometry]=4 [denoise]=4
+  [carve]=5 [eval]=5 [model]=5
+  [occlusion]=6 [sim]=6
+  [mesh]=7 [fit]=7
+  [pipeline]=8
+  [session]=9
 )
 
 status=0

@@ -63,26 +63,6 @@ void shiftMission(const std::filesystem::path& from, const std::filesystem::path
                   offset_m);
 }
 
-// The x, y, z of an ASCII PLY's vertices, in double (a float reader would lose the metres'
-// decimals at 5e6 m).
-std::vector<Eigen::Vector3d> readAsciiPlyPoints(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::size_t count = 0;
-  while (std::getline(in, line) && line != "end_header") {
-    std::istringstream words(line);
-    std::string keyword, element;
-    if (words >> keyword >> element && keyword == "element" && element == "vertex") {
-      words >> count;
-    }
-  }
-  std::vector<Eigen::Vector3d> points(count);
-  for (std::size_t i = 0; i < count && std::getline(in, line); ++i) {
-    std::istringstream(line) >> points[i].x() >> points[i].y() >> points[i].z();
-  }
-  return points;
-}
-
 nlohmann::json readReport(const std::filesystem::path& out) {
   return nlohmann::json::parse(test::readText(out / "report.json"));
 }
@@ -139,7 +119,7 @@ TEST_F(FarNavigation, UtmNavigationGivesTheSameSurfaceAsNearZero) {
              " --points --add-origin --format ply-ascii --out " + quoted(world_file));
   ASSERT_EQ(exported.exit_code, 0) << exported.output;
   EXPECT_NE(test::readText(world_file).find("property double x"), std::string::npos);
-  const std::vector<Eigen::Vector3d> world = readAsciiPlyPoints(world_file);
+  const std::vector<Eigen::Vector3d> world = test::readAsciiPlyPoints(world_file);
   ASSERT_EQ(world.size(), near_points.size());
   double worst_m = 0.0;
   for (const Eigen::Vector3d& p : world) {

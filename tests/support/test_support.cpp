@@ -94,4 +94,26 @@ void writeText(const std::filesystem::path& path, const std::string& text) {
   out << text;
 }
 
+std::vector<Eigen::Vector3d> readAsciiPlyPoints(const std::filesystem::path& path,
+                                                std::string* header) {
+  std::ifstream in(path);
+  std::string line;
+  std::size_t count = 0;
+  while (std::getline(in, line) && line != "end_header") {
+    if (header != nullptr) {
+      *header += line + "\n";
+    }
+    std::istringstream words(line);
+    std::string keyword, element;
+    if (words >> keyword >> element && keyword == "element" && element == "vertex") {
+      words >> count;
+    }
+  }
+  std::vector<Eigen::Vector3d> points(count);
+  for (std::size_t i = 0; i < count && std::getline(in, line); ++i) {
+    std::istringstream(line) >> points[i].x() >> points[i].y() >> points[i].z();
+  }
+  return points;
+}
+
 }  // namespace sonarcarve::test

@@ -66,5 +66,9 @@ void expectError(Run run, const std::vector<std::string>& fragments) {
   }
 }
 void writeText(const std::filesystem::path& path, const std::string& text);
+/// The x, y, z of an ASCII PLY's vertices, in double (a float reader would lose the metres'
+/// decimals at 5e6 m); its header lines before end_header into `header` when given.
+std::vector<Eigen::Vector3d> readAsciiPlyPoints(const std::filesystem::path& path,
+                                                std::string* header = nullptr);
 
 }  // namespace sonarcarve::test

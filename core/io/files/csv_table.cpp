@@ -1,5 +1,6 @@
 #include "io/files/csv_table.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -89,6 +90,14 @@ std::size_t CsvTable::column(const std::string& name) const {
     }
   }
   throw Error(file_, linePlace(header_line_), "missing column '" + name + "'");
+}
+
+bool CsvTable::has(const std::string& name) const {
+  return std::find(header_.begin(), header_.end(), name) != header_.end();
+}
+
+std::string CsvTable::headerPlace() const {
+  return linePlace(header_line_);
 }
 
 const std::string& CsvTable::text(const Row& row, std::size_t column) const {

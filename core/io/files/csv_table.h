@@ -36,6 +36,10 @@ class CsvTable {
 
   /// Index of a column; throws Error naming the missing column and the header line.
   std::size_t column(const std::string& name) const;
+  /// Whether the header names the column.
+  bool has(const std::string& name) const;
+  /// The header's line, as an Error place ("line 3").
+  std::string headerPlace() const;
   /// A finite number; throws Error on text, NaN or infinity.
   double number(const Row& row, std::size_t column) const;
   const std::string& text(const Row& row, std::size_t column) const;

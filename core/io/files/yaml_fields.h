@@ -13,6 +13,7 @@ namespace sonarcarve {
 class YamlFields {
  public:
   explicit YamlFields(std::string file) : file_(std::move(file)) {}
+  const std::string& file() const { return file_; }
 
   /// Parses a whole file; throws Error if it is missing, empty or not valid YAML.
   YAML::Node load() const;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "geo/crs.h"
 #include "io/files/atomic_file.h"
 #include "io/files/finite_points.h"
 #include "io/mesh/ply_check.h"
@@ -284,6 +285,21 @@ Eigen::Vector3d plyOrigin(const std::filesystem::path& path) {
     return origin;
   }
   return Eigen::Vector3d::Zero();
+}
+
+std::string plyCrs(const std::filesystem::path& path) {
+  const std::string keyword = std::string(kCrsCommentKeyword) + " ";
+  for (const std::string& comment : checkPlyFile(path).comments) {
+    if (comment == kCrsCommentKeyword || comment.starts_with(keyword)) {
+      const std::size_t start = comment.find_first_not_of(' ', keyword.size() - 1);
+      if (start == std::string::npos) {
+        throw Error(path.string(), "header comment '" + comment + "'",
+                    "expected 'crs' and a CRS (EPSG:NNNN, a PROJ string or WKT)");
+      }
+      return comment.substr(start);
+    }
+  }
+  return "";
 }
 
 PointCloud readPointCloudPly(const std::filesystem::path& path,

@@ -40,6 +40,10 @@ PointCloud readPointCloudPly(const std::filesystem::path& path,
 /// Error naming the file on an origin comment that is not three finite numbers.
 Eigen::Vector3d plyOrigin(const std::filesystem::path& path);
 
+/// The CRS a PLY file's header carries (crsComment, geo/crs.h: the grid its world frame is),
+/// empty when it carries none. Throws Error naming the file on a crs comment without a CRS.
+std::string plyCrs(const std::filesystem::path& path);
+
 struct PlyMesh {
   PointCloud vertices;
   Triangles triangles;

@@ -5,6 +5,7 @@
 #include "io/files/frame_png.h"
 #include "io/files/yaml_fields.h"
 #include "io/frame_source.h"
+#include "io/mission/mission_place.h"
 #include "io/mission/nav_csv.h"
 #include "io/mission/sonar_yaml.h"
 
@@ -159,7 +160,12 @@ Mission readMission(const std::filesystem::path& folder_or_yaml) {
     fields.fail(encoding, "frames.encoding", "expected 'png16' (the only v1 encoding)");
   }
 
-  NavTrack nav = readNavCsv(folder / nav_file);
+  std::string crs = declaredCrs(root, fields);
+  NavTrack nav = readNavCsv(folder / nav_file, crs);
+  const std::optional<Eigen::Vector3d> origin = declaredOrigin(root, fields, crs);
+  if (origin) {
+    nav = translatedTrack(nav, -*origin);
+  }
   std::vector<FrameRecord> frames =
       readFrameIndex(folder / index_file, allowsFilesOutside(frames_node, fields));
   Mission mission{folder,
@@ -173,7 +179,8 @@ Mission readMission(const std::filesystem::path& folder_or_yaml) {
                   nullptr,
                   {},
                   {},
-                  Eigen::Vector3d::Zero()};
+                  origin.value_or(Eigen::Vector3d::Zero()),
+                  std::move(crs)};
   mission.source = makeMissionFolderSource(mission);
   return mission;
 }

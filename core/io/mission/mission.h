@@ -56,6 +56,10 @@ struct Mission {
   /// Subtracted from the navigation when it was read (sonar/mission_origin.h): the track, the
   /// map and every output are local to it; world NED = local + origin. Zero near zero.
   Eigen::Vector3d origin_ned_m = Eigen::Vector3d::Zero();
+  /// The projected CRS whose grid the world frame is (north = northing, east = easting, down =
+  /// depth; docs/conventions.md, "Geodetic navigation and CRSs"): mission.yaml's `crs`, or the
+  /// UTM zone geodetic navigation was placed on. Empty: NED navigation without a CRS.
+  std::string crs{};
 };
 
 /// A frame that could not be used, with the reason.

@@ -35,7 +35,7 @@ void MissionWriter::addFrame(const Frame& frame) {
   records_.push_back({frame.time_s, sonar_.id(), name, 0});
 }
 
-void MissionWriter::finish(const NavTrack& nav) {
+void MissionWriter::finish(const NavTrack& nav, const std::string& crs) {
   writeFileAtomically(folder_ / "nav.csv", navCsvText(nav));
   std::string index = "time_s,sonar_id,file\n";
   for (const FrameRecord& r : records_) {
@@ -56,7 +56,11 @@ void MissionWriter::finish(const NavTrack& nav) {
   out << YAML::Key << "frames" << YAML::Value << YAML::Flow << YAML::BeginMap;
   out << YAML::Key << "index" << YAML::Value << "frames.csv";
   out << YAML::Key << "encoding" << YAML::Value << "png16";
-  out << YAML::EndMap << YAML::EndMap;
+  out << YAML::EndMap;
+  if (!crs.empty()) {
+    out << YAML::Key << "crs" << YAML::Value << crs;
+  }
+  out << YAML::EndMap;
   writeFileAtomically(folder_ / kMissionFileName, std::string(out.c_str()) + "\n");
 }
 

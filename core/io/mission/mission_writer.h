@@ -20,8 +20,9 @@ class MissionWriter {
   /// Writes the frame's image as frames/NNNNNN.png. Throws Error if its size does not match
   /// the sonar model or a value cannot be stored (NaN, negative, above 65535).
   void addFrame(const Frame& frame);
-  /// Writes nav.csv, frames.csv and mission.yaml.
-  void finish(const NavTrack& nav);
+  /// Writes nav.csv, frames.csv and mission.yaml; a `crs` (Mission::crs: the grid the world
+  /// NED navigation is on) goes into mission.yaml, so that the mission reads back on it.
+  void finish(const NavTrack& nav, const std::string& crs = "");
 
   std::size_t frameCount() const { return records_.size(); }
 

@@ -11,8 +11,10 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "geo/crs.h"
 #include "io/files/csv_table.h"
 #include "io/files/yaml_fields.h"
+#include "io/mission/nav_positions.h"
 #include "sonar/attitude.h"
 #include "sonar/mission_origin.h"
 
@@ -68,6 +70,7 @@ NavMapping mappingFromYamlUnchecked(const YAML::Node& root, const YamlFields& fi
   if (root["columns"]) {
     mapping.time = mapping.north = mapping.east = mapping.down = {};
     mapping.roll = mapping.pitch = mapping.yaw = {};
+    mapping.default_positions = false;
   }
   const auto set = [&](const std::string& key, const YAML::Node& node) {
     try {
@@ -82,13 +85,13 @@ NavMapping mappingFromYamlUnchecked(const YAML::Node& root, const YamlFields& fi
   for (const auto& entry : root) {
     const std::string section = entry.first.as<std::string>();
     const YAML::Node& value = entry.second;
-    if (section == "delimiter" || section == "header") {
+    if (section == "delimiter" || section == "header" || section == "crs") {
       set(section, value);
       continue;
     }
     if (section != "columns" && section != "units" && section != "conventions") {
       fields.fail(entry.first, section,
-                  "unknown key: expected columns, units, conventions, delimiter or header");
+                  "unknown key: expected columns, units, conventions, delimiter, header or crs");
     }
     if (!value.IsMap()) {
       fields.fail(value, section, "expected a mapping of keys");
@@ -112,15 +115,43 @@ NavMapping mappingFromYaml(const YAML::Node& root, const YamlFields& fields,
   }
 }
 
-NavTrack trackFromTable(const CsvTable& table, const NavMapping& mapping) {
-  if (!mapping.time.given() || !mapping.north.given() || !mapping.east.given() ||
+// The two columns of the positions' kind: (north, east), (latitude, longitude) or (northing,
+// easting). A mapping that names none reads the header as nav.csv does.
+std::pair<NavColumn, NavColumn> positionColumns(const CsvTable& table, const NavMapping& m,
+                                                PositionKind& kind) {
+  if (m.default_positions) {
+    kind = positionKind(table.has("north_m") || table.has("east_m"),
+                        table.has("latitude_deg") || table.has("longitude_deg"),
+                        table.has("easting_m") || table.has("northing_m"),
+                        "north_m, east_m, latitude_deg, longitude_deg, easting_m, northing_m",
+                        table.file(), table.headerPlace());
+    return kind == PositionKind::Geodetic
+               ? std::pair{NavColumn{"latitude_deg"}, NavColumn{"longitude_deg"}}
+           : kind == PositionKind::Projected
+               ? std::pair{NavColumn{"northing_m"}, NavColumn{"easting_m"}}
+               : std::pair{m.north, m.east};
+  }
+  kind = positionKind(m.north.given() || m.east.given(), m.latitude.given() || m.longitude.given(),
+                      m.easting.given() || m.northing.given(),
+                      "columns north, east, latitude, longitude, easting, northing", table.file(),
+                      "the navigation mapping");
+  return kind == PositionKind::Geodetic    ? std::pair{m.latitude, m.longitude}
+         : kind == PositionKind::Projected ? std::pair{m.northing, m.easting}
+                                           : std::pair{m.north, m.east};
+}
+
+NavTrack trackFromTable(const CsvTable& table, const NavMapping& mapping, std::string& grid_crs) {
+  PositionKind kind = PositionKind::Ned;
+  const auto [north, east] = positionColumns(table, mapping, kind);
+  if (!mapping.time.given() || !north.given() || !east.given() ||
       !(mapping.down.given() || mapping.up.given())) {
     throw Error(table.file(), "",
-                "the navigation mapping must name the time, north, east and down (or up) columns");
+                "the navigation mapping must name the time, north, east (or latitude, "
+                "longitude, or easting, northing) and down (or up) columns");
   }
   const std::size_t t = resolve(table, mapping.time);
-  const std::size_t n = resolve(table, mapping.north);
-  const std::size_t e = resolve(table, mapping.east);
+  const std::size_t n = resolve(table, north);
+  const std::size_t e = resolve(table, east);
   const std::size_t v = resolve(table, mapping.down.given() ? mapping.down : mapping.up);
   const double v_sign = mapping.down.given() ? 1.0 : -1.0;
   const auto optional = [&](const NavColumn& c) {
@@ -137,6 +168,7 @@ NavTrack trackFromTable(const CsvTable& table, const NavMapping& mapping) {
     return column ? table.number(row, *column) * angle : 0.0;
   };
   std::vector<NavSample> samples;
+  std::vector<Eigen::Vector2d> xy;  // geodetic or projected positions, x first
   samples.reserve(table.rows().size());
   for (const auto& row : table.rows()) {
     NavSample s;
@@ -147,9 +179,18 @@ NavTrack trackFromTable(const CsvTable& table, const NavMapping& mapping) {
                       "': time goes backwards or repeats: " + shortestNumber(s.time_s) +
                       " s after " + shortestNumber(samples.back().time_s) + " s");
     }
-    s.position_m =
-        mapping.metres_per_unit *
-        Eigen::Vector3d(table.number(row, n), table.number(row, e), v_sign * table.number(row, v));
+    if (kind == PositionKind::Ned) {
+      s.position_m =
+          mapping.metres_per_unit * Eigen::Vector3d(table.number(row, n), table.number(row, e),
+                                                    v_sign * table.number(row, v));
+    } else {
+      // Degrees, or the CRS's metres: the position unit is the depth's only.
+      s.position_m = {0.0, 0.0, mapping.metres_per_unit * v_sign * table.number(row, v)};
+      xy.push_back(kind == PositionKind::Geodetic
+                       ? geodeticXy(table.number(row, n), table.number(row, e), table.file(),
+                                    linePlace(row.line))
+                       : Eigen::Vector2d(table.number(row, e), table.number(row, n)));
+    }
     RollPitchYaw rpy;
     rpy.roll_rad = angleAt(row, roll) * (mapping.roll_port_down ? -1.0 : 1.0);
     rpy.pitch_rad = angleAt(row, pitch) * (mapping.pitch_bow_down ? -1.0 : 1.0);
@@ -159,10 +200,28 @@ NavTrack trackFromTable(const CsvTable& table, const NavMapping& mapping) {
     if (!s.position_m.allFinite() || !std::isfinite(s.time_s)) {
       throw Error(table.file(), linePlace(row.line), "value out of range after unit conversion");
     }
-    requirePlausiblePosition(s.position_m, table.file(), linePlace(row.line));
+    if (kind == PositionKind::Ned) {
+      requirePlausiblePosition(s.position_m, table.file(), linePlace(row.line));
+    }
     samples.push_back(s);
   }
+  const auto place = [&](std::size_t i) { return linePlace(table.rows()[i].line); };
+  placeNavOnGrid(samples, xy, kind, grid_crs, {table.file(), place}, table.headerPlace());
+  if (kind != PositionKind::Ned) {
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      requirePlausiblePosition(samples[i].position_m, table.file(), place(i));
+    }
+  }
   return NavTrack(std::move(samples));
+}
+
+NavTrack trackWithCrs(const CsvTable& table, const NavMapping& mapping, std::string* grid_crs) {
+  std::string crs = mapping.crs;
+  NavTrack track = trackFromTable(table, mapping, crs);
+  if (grid_crs != nullptr) {
+    *grid_crs = crs;
+  }
+  return track;
 }
 
 }  // namespace
@@ -176,12 +235,30 @@ void setNavMapping(NavMapping& m, const std::string& key, const std::string& val
   if (key.starts_with("columns.")) {
     const std::string what = key.substr(8);
     const NavColumn column = columnFrom(value);
+    // Naming a position column ends the choice by the header; a geodetic or projected one
+    // also ends the default north and east.
+    const bool grid_or_geodetic =
+        what == "latitude" || what == "longitude" || what == "easting" || what == "northing";
+    if (grid_or_geodetic && m.default_positions) {
+      m.north = m.east = {};
+    }
+    if (grid_or_geodetic || what == "north" || what == "east") {
+      m.default_positions = false;
+    }
     if (what == "time") {
       m.time = column;
     } else if (what == "north") {
       m.north = column;
     } else if (what == "east") {
       m.east = column;
+    } else if (what == "latitude") {
+      m.latitude = column;
+    } else if (what == "longitude") {
+      m.longitude = column;
+    } else if (what == "easting") {
+      m.easting = column;
+    } else if (what == "northing") {
+      m.northing = column;
     } else if (what == "down" || what == "depth") {
       m.down = column;
       m.up = {};
@@ -197,8 +274,9 @@ void setNavMapping(NavMapping& m, const std::string& key, const std::string& val
     } else {
       throw Error(source, "",
                   key +
-                      ": unknown column role: expected time, north, east, down (or depth), up "
-                      "(or altitude), roll, pitch, yaw (or heading)");
+                      ": unknown column role: expected time, north, east (or latitude, "
+                      "longitude, or easting, northing), down (or depth), up (or altitude), "
+                      "roll, pitch, yaw (or heading)");
     }
   } else if (key == "units.time") {
     m.seconds_per_time_unit =
@@ -219,6 +297,11 @@ void setNavMapping(NavMapping& m, const std::string& key, const std::string& val
         choose<char>(source, key, value, {{",", ','}, {";", ';'}, {"|", '|'}, {"tab", '\t'}});
   } else if (key == "header") {
     m.header = choose<bool>(source, key, value, {{"true", true}, {"false", false}});
+  } else if (key == "crs") {
+    if (const auto problem = gridCrsProblem(value)) {
+      throw Error(source, "", key + ": " + *problem);
+    }
+    m.crs = value;
   } else {
     throw Error(source, "", key + ": unknown setting");
   }
@@ -240,14 +323,15 @@ NavMapping parseNavMapping(std::string_view text, const std::string& source) {
   return mappingFromYaml(root, fields, source);
 }
 
-NavTrack importNavCsv(const std::filesystem::path& path, const NavMapping& mapping) {
-  return trackFromTable(CsvTable::read(path, {mapping.delimiter, mapping.header}), mapping);
+NavTrack importNavCsv(const std::filesystem::path& path, const NavMapping& mapping,
+                      std::string* grid_crs) {
+  return trackWithCrs(CsvTable::read(path, {mapping.delimiter, mapping.header}), mapping, grid_crs);
 }
 
 NavTrack importNavCsvText(std::string_view text, const std::string& source,
-                          const NavMapping& mapping) {
-  return trackFromTable(CsvTable::parse(text, source, {mapping.delimiter, mapping.header}),
-                        mapping);
+                          const NavMapping& mapping, std::string* grid_crs) {
+  return trackWithCrs(CsvTable::parse(text, source, {mapping.delimiter, mapping.header}), mapping,
+                      grid_crs);
 }
 
 }  // namespace sonarcarve

@@ -31,7 +31,18 @@ struct NavMapping {
   NavColumn up;              ///< instead of down: altitude or height, positive up
   NavColumn roll{"roll_deg"};
   NavColumn pitch{"pitch_deg"};
-  NavColumn yaw{"yaw_deg"};            ///< heading or yaw, see heading_enu
+  NavColumn yaw{"yaw_deg"};  ///< heading or yaw, see heading_enu
+  /// Instead of north and east (io/mission/nav_positions.h): WGS84 degrees ...
+  NavColumn latitude;
+  NavColumn longitude;
+  /// ... or metres in `crs`.
+  NavColumn easting;
+  NavColumn northing;
+  /// The projected CRS (EPSG:NNNN, a PROJ string) of easting and northing, and of the grid
+  /// latitude and longitude are placed on; empty: their first sample's UTM zone.
+  std::string crs;
+  /// No position column named (the defaults): the kind is the header's, as in nav.csv.
+  bool default_positions = true;
   double seconds_per_time_unit = 1.0;  ///< s, ms, us
   double metres_per_unit = 1.0;        ///< m or ft
   bool degrees = true;                 ///< angles in degrees (else radians)
@@ -42,8 +53,9 @@ struct NavMapping {
   bool roll_port_down = false;  ///< positive roll lowers the port side
 };
 
-/// Sets one field of the mapping: `key` is "columns.time" ... "columns.heading",
-/// "units.time|position|angles", "conventions.heading|pitch|roll", "delimiter" or "header".
+/// Sets one field of the mapping: `key` is "columns.time" ... "columns.heading" (and
+/// "columns.latitude|longitude|easting|northing"), "units.time|position|angles",
+/// "conventions.heading|pitch|roll", "delimiter", "header" or "crs" (checked by PROJ).
 /// Throws Error(source, "", ...) naming the key and the allowed values on a bad value;
 /// callers with a better place (a YAML line) catch and rethrow.
 void setNavMapping(NavMapping& mapping, const std::string& key, const std::string& value,
@@ -56,9 +68,12 @@ NavMapping readNavMapping(const std::filesystem::path& path);
 NavMapping parseNavMapping(std::string_view text, const std::string& source);
 
 /// Reads a navigation CSV with a mapping. Errors name the file, the line and the column.
-NavTrack importNavCsv(const std::filesystem::path& path, const NavMapping& mapping);
+/// `grid_crs` (when given) receives the CRS of the track's grid: the mapping's, or the UTM zone
+/// geodetic positions were placed on; empty for NED positions without a CRS.
+NavTrack importNavCsv(const std::filesystem::path& path, const NavMapping& mapping,
+                      std::string* grid_crs = nullptr);
 /// The same from text in memory; `source` names it in messages.
 NavTrack importNavCsvText(std::string_view text, const std::string& source,
-                          const NavMapping& mapping);
+                          const NavMapping& mapping, std::string* grid_crs = nullptr);
 
 }  // namespace sonarcarve

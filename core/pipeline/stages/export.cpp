@@ -21,16 +21,17 @@ void writeOutputs(const RunContext& run, const OutputSettings& settings, RunMani
   const std::filesystem::path& out = settings.folder;
   const ReconstructionResult& result = run.result;
   const Eigen::Vector3d& origin = run.mission.origin_ned_m;
-  writeSurfacePointsPly(result.surface, out / "surface_points.ply", origin);
+  const std::string& crs = run.mission.crs;
+  writeSurfacePointsPly(result.surface, out / "surface_points.ply", origin, crs);
   manifest.wrote("surface_points.ply");
   const bool bt = result.map_bt_skipped.empty();  // else the read stage said why
   if (result.evicted && bt) {
     writeOccupancyBt(result.occupancy.sorted(), run.params.carve.voxel_size_m, out / "map.bt",
-                     origin);
+                     origin, crs);
     manifest.wrote("map.bt");
   } else if (result.map) {
     if (bt) {
-      writeOccupancyBt(*result.map, out / "map.bt", origin);
+      writeOccupancyBt(*result.map, out / "map.bt", origin, crs);
       manifest.wrote("map.bt");
     }
     if (settings.save_map) {
@@ -41,6 +42,7 @@ void writeOutputs(const RunContext& run, const OutputSettings& settings, RunMani
   if (!result.mesh.triangles.empty()) {
     ExportOptions ply;
     ply.mission_origin_ned_m = origin;
+    ply.mission_crs = crs;
     exportMesh(result.mesh, out / "mesh.ply", ply);
     manifest.wrote("mesh.ply");
     ExportOptions stl;

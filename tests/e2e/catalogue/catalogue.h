@@ -64,6 +64,7 @@ std::vector<CatalogueCase> outputCases();
 std::vector<CatalogueCase> oculusCases();
 std::vector<CatalogueCase> readerCases();
 std::vector<CatalogueCase> bagCases();
+std::vector<CatalogueCase> geoCases();
 
 // Inputs for the cases.
 inline constexpr const char* kPreviousContent = "a file of an earlier run\n";

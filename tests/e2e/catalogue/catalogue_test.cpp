@@ -22,6 +22,7 @@ INSTANTIATE_TEST_SUITE_P(Outputs, Catalogue, ::testing::ValuesIn(outputCases()),
 INSTANTIATE_TEST_SUITE_P(Oculus, Catalogue, ::testing::ValuesIn(oculusCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Readers, Catalogue, ::testing::ValuesIn(readerCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Bags, Catalogue, ::testing::ValuesIn(bagCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Geo, Catalogue, ::testing::ValuesIn(geoCases()), nameOf);
 
 }  // namespace
 }  // namespace sonarcarve::test
