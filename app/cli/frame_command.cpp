@@ -34,7 +34,16 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
       ->required();
   auto source = std::make_shared<SourceFlags>();
   addSourceFlags(*cmd, *source);
-  cmd->add_option("--index", o->index, "Frame index (0-based)")->capture_default_str();
+  cmd->add_option("--index", o->index, "Frame index (0-based)")
+      ->capture_default_str()
+      // "-1" would otherwise read as 2^64 - 1.
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            return !text.empty() && text.front() == '-'
+                       ? "expected a frame index of 0 or more, got " + text
+                       : std::string();
+          },
+          "INDEX >= 0"));
   cmd->add_option("--polar", o->polar, "Write the polar image here (PNG)");
   cmd->add_option("--fan", o->fan, "Write the fan in true geometry here (PNG)");
   cmd->add_option("--noise-model", o->noise_model, "Noise model for --detected");

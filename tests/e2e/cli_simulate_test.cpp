@@ -313,6 +313,11 @@ TEST(CliFrame, DrawsPolarAndFanPictures) {
   EXPECT_EQ(f.cols, 900);
   EXPECT_GT(f.rows, 100);
   EXPECT_NE(runCli("frame " + quoted(test::exampleMission()) + " --index 99").exit_code, 0);
+  // A negative index is refused as such, not read as 18446744073709551615 (issue 44).
+  const auto negative = runCli("frame " + quoted(test::exampleMission()) + " --index -1");
+  EXPECT_NE(negative.exit_code, 0);
+  EXPECT_NE(negative.output.find("--index"), std::string::npos) << negative.output;
+  EXPECT_EQ(negative.output.find("18446744073709551615"), std::string::npos) << negative.output;
 }
 
 }  // namespace
