@@ -462,6 +462,9 @@ void MainWindow::wireRunner() {
             map_view_->setLive(false);
             map_view_->flush();
             map_view_->setResult(std::move(*view));  // built on the worker
+            showIntensityUnit(std::any_of(
+                result->choices.begin(), result->choices.end(),
+                [](const RunChoice& c) { return c.name == "map fit" && c.value == "on"; }));
             if (!result->surface.empty()) {
               layer_->setCurrentIndex(preferred_layer_);  // the surface, or the user's choice
               if (!view_settled_) {
@@ -504,6 +507,17 @@ void MainWindow::wireRunner() {
     updateRunActions();
     emit runFailed(message);
   });
+}
+
+void MainWindow::showIntensityUnit(bool fitted) {
+  // Carving keeps power, which a decibel or gamma sonar's counts are not; a fitted map keeps
+  // each point's fitted reflectance (core/fit/fitted_surface.h).
+  if (fitted) {
+    map_view_->setIntensityUnit(tr("fitted reflectance"));
+  } else if (mission_) {
+    map_view_->setIntensityUnit(mission_->sonar.intensityScale().isLinear() ? tr("counts")
+                                                                            : tr("power"));
+  }
 }
 
 void MainWindow::log(const QString& line) {
@@ -636,9 +650,7 @@ bool MainWindow::openMissionWith(const QString& path, bool own_params) {
   track_view_->setTrack(std::move(nav));
   map_view_->clearMap();
   map_view_->setTrack(sonar_track);
-  // The map holds what carving kept: power, which a decibel or gamma sonar's counts are not.
-  map_view_->setIntensityUnit(mission_->sonar.intensityScale().isLinear() ? tr("counts")
-                                                                          : tr("power"));
+  showIntensityUnit(false);
   timeline_->setFrameTimes(times);
   followParams();
   showFrame(0);

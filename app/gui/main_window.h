@@ -134,6 +134,8 @@ class MainWindow : public QMainWindow {
   void buildDocks();
   void wireRunner();
   void showError(const QString& title, const QString& message);
+  /// The 3D view's intensity unit: the fitted reflectance after a run with the map fit.
+  void showIntensityUnit(bool fitted);
   void log(const QString& line);
   // A frame read and denoised off the GUI thread, ready to draw.
   struct ShownFrame {
