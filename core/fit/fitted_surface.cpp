@@ -57,6 +57,7 @@ SurfacePoints fittedSurface(const BlockGrid& grid, const SonarModel& sonar,
   const ElevationFan fan = elevationFan(half, params.elevation_step_rad);
   const double ds = sonar.range().resolution_m / params.samples_per_bin;
   const MarchLimits limits{sonar.range(), params.samples_per_bin, 1e-3, 1e-4};
+  const ActiveCells active = ActiveCells::reaching(grid, limits.min_alpha);
   CrossingMap merged;
   std::mutex merge_mutex;
   for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -68,7 +69,7 @@ SurfacePoints fittedSurface(const BlockGrid& grid, const SonarModel& sonar,
     pool.parallelFor(static_cast<std::size_t>(sonar.cols()), 8,
                      [&](std::size_t begin, std::size_t end) {
                        CrossingMap local;
-                       StencilReader reader(grid);
+                       StencilReader reader(grid, &active);
                        std::vector<RaySample> samples;
                        for (auto b = begin; b < end; ++b) {
                          const double bearing = sonar.bearings().centre(static_cast<int>(b));

@@ -155,6 +155,7 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
 
   // Sum of |observed - background| over the sampled frames, for the figures' ratio.
   double returns = 0.0;
+  FrameTrace trace;
   // One look at a frame: its figures, and the gradient when asked.
   auto look = [&](const ForwardModel& with, const MapFitFrame& frame, FitPassFigures& figures,
                   ModelGradient* gradient, bool first_look = false) {
@@ -162,7 +163,11 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
       throw Cancelled();
     }
     view.T_world_sonar = frame.T_world_sonar;
-    const cv::Mat prediction = with.predict(grid, view);
+    // With a gradient to take, one march serves the prediction and the gradient.
+    if (gradient) {
+      with.trace(grid, view, trace);
+    }
+    const cv::Mat prediction = gradient ? with.predict(trace, view) : with.predict(grid, view);
     const cv::Mat image = asDouble(load(frame.index));
     cv::Mat dloss;
     figures.nll_per_pixel += speckleNll(prediction, image, gradient ? &dloss : nullptr);
@@ -171,7 +176,7 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
       returns += cv::norm(image, background_image, cv::NORM_L1);
     }
     if (gradient) {
-      gradient->add(with.gradient(grid, view, dloss));
+      gradient->add(with.gradient(trace, grid, view, dloss));
     }
     progress.report("fit", ++done, work);
   };

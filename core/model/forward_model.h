@@ -19,12 +19,14 @@
 
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
+#include <span>
 #include <vector>
 
 #include "common/thread_pool.h"
 #include "model/block_grid.h"
 #include "model/elevation_profile.h"
 #include "model/model_gradient.h"
+#include "model/ray_march.h"
 #include "sonar/sonar_model.h"
 
 namespace sonarcarve {
@@ -49,6 +51,41 @@ struct FrameView {
   std::vector<double> background;  ///< per range bin; empty: 0 everywhere
 };
 
+/// One elevation ray of one beam, and what its samples are weighted by.
+struct ModelRay {
+  int beam = 0;
+  double elevation_rad = 0.0;
+  Eigen::Vector3d direction_sonar;
+  Eigen::Vector3d direction_world;
+  double unit_scale = 0.0;   ///< dtheta / A
+  double scale = 0.0;        ///< G * dtheta / A
+  double beam_weight = 0.0;  ///< p(theta) cos(theta)
+  double power = 0.0;        ///< p(theta)
+};
+
+/// The samples of every ray of one frame that met the surface: one march that the prediction
+/// and the gradient share. It keeps the samples' values, not the voxels they read (which the
+/// gradient reads again where it needs them: a fifteenth of the memory). Kept between frames,
+/// it keeps its memory.
+class FrameTrace {
+ public:
+  std::size_t samples() const;
+
+ private:
+  friend class ForwardModel;
+  struct Beam {
+    std::vector<ModelRay> rays;
+    std::vector<std::size_t> ends;  ///< ray r's samples end at ends[r]
+    std::vector<SampleValues> samples;
+    std::span<const SampleValues> of(std::size_t r) const {
+      const std::size_t begin = r == 0 ? 0 : ends[r - 1];
+      return {samples.data() + begin, ends[r] - begin};
+    }
+  };
+  std::vector<Beam> beams_;  ///< per traced beam
+  Eigen::Vector3d origin_;   ///< of the rays, world frame
+};
+
 class ForwardModel {
  public:
   /// `sonar` and `pool` must outlive the model. Throws Error on invalid settings.
@@ -60,11 +97,22 @@ class ForwardModel {
   ModelGradient gradient(const BlockGrid& grid, const FrameView& view,
                          const cv::Mat& dloss_dframe) const;
 
+  /// Marches every ray of the frame once, into `trace`, for predict and gradient below, which
+  /// equal the two above as long as the grid and the view stay as they were traced.
+  void trace(const BlockGrid& grid, const FrameView& view, FrameTrace& trace) const;
+  cv::Mat predict(const FrameTrace& trace, const FrameView& view) const;
+  ModelGradient gradient(const FrameTrace& trace, const BlockGrid& grid, const FrameView& view,
+                         const cv::Mat& dloss_dframe) const;
+
   const ModelSettings& settings() const { return settings_; }
 
  private:
   template <typename RayBody>
   void forEachRay(const BlockGrid& grid, const FrameView& view, const RayBody& body) const;
+  template <typename RayBody>
+  void forEachTracedRay(const FrameTrace& trace, const RayBody& body) const;
+  template <typename Sample>
+  void deposit(const ModelRay& ray, std::span<const Sample> samples, cv::Mat& columns) const;
 
   const SonarModel& sonar_;
   ModelSettings settings_;

@@ -59,7 +59,7 @@ void marchRay(StencilReader& reader, double voxel_size, const Eigen::Vector3d& o
     const double range = bins.min_m + (i + 0.5) * ds;
     const Eigen::Vector3d p = origin + range * direction;
     double exit_m = 0.0;
-    if (!reader.inPresentBlock(p, direction, exit_m)) {
+    if (!reader.inSampledCell(p, direction, exit_m)) {
       const double next = std::ceil((range + exit_m - bins.min_m) / ds - 0.5);
       i = std::max(i + 1, static_cast<int>(std::min(next, double(last))));
       continue;

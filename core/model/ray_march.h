@@ -1,9 +1,10 @@
 // RayMarch: one elevation ray of the forward model through the block grid. The ray samples
 // the range axis on a fixed lattice, r_i = min + (i + 1/2) ds with ds = bin width /
 // samples_per_bin, so that every range bin gets the same number of samples and a sample's
-// bin never depends on the pose. It jumps over absent blocks; of the samples in present
-// blocks it keeps those whose occupancy alpha = sigmoid(o) reaches min_alpha (the others are
-// taken as empty: alpha = 0), with their transmittance T_i = prod over kept m < i of
+// bin never depends on the pose. It jumps over absent blocks and over the cells the reader
+// says hold nothing that reaches min_alpha (model/active_cells.h); of the other samples it
+// keeps those whose occupancy alpha = sigmoid(o) reaches min_alpha (the others are taken as
+// empty: alpha = 0), with their transmittance T_i = prod over kept m < i of
 // (1 - alpha_m), until T falls below min_transmittance.
 #pragma once
 
@@ -15,7 +16,8 @@
 
 namespace sonarcarve {
 
-struct RaySample {
+/// What the prediction needs of a sample.
+struct SampleValues {
   double range_m = 0.0;
   Eigen::Vector3d p_sonar;  ///< sample point in the sonar frame
   double alpha = 0.0;
@@ -23,6 +25,10 @@ struct RaySample {
   double reflectance = 0.0;
   Eigen::Vector3d gradient;    ///< occupancy gradient (logit per metre), world frame
   double cos_incidence = 0.0;  ///< max(0, d . g / |g|)
+};
+
+/// And the gradient the voxels it read, 15 times as large.
+struct RaySample : SampleValues {
   VoxelStencil stencil;
 };
 

@@ -1,5 +1,6 @@
 #include "model/voxel_stencil.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -36,29 +37,44 @@ Eigen::Vector3d VoxelStencil::gradientAt(double voxel_size) const {
   return g;
 }
 
-bool StencilReader::inPresentBlock(const Eigen::Vector3d& p, const Eigen::Vector3d& direction,
-                                   double& exit_m) {
+namespace {
+
+// How far along `direction` from `p` the ray leaves the axis-aligned cube of side `side` metres
+// whose lowest corner is `corner` (in units of the side).
+double cubeExit(const Eigen::Vector3i& corner, double side, const Eigen::Vector3d& p,
+                const Eigen::Vector3d& direction) {
+  double exit_m = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    const double d = direction[axis];
+    if (std::abs(d) > 1e-12) {
+      const double wall = (corner[axis] + (d > 0.0 ? 1 : 0)) * side;
+      exit_m = std::min(exit_m, (wall - p[axis]) / d);
+    }
+  }
+  return std::max(exit_m, 0.0);
+}
+
+}  // namespace
+
+bool StencilReader::inSampledCell(const Eigen::Vector3d& p, const Eigen::Vector3d& direction,
+                                  double& exit_m) {
   Eigen::Vector3i voxel;
-  if (grid_.voxelOf(p, voxel)) {
-    const Eigen::Vector3i block = BlockGrid::blockOf(voxel);
-    findBlocks(voxel, voxel);
-    if (blocks_[0] >= 0) {
-      return true;
-    }
-    // Slab exit of the block's box along the direction.
-    const double side = grid_.voxelSize() * kBlockSide;
-    exit_m = std::numeric_limits<double>::infinity();
-    for (int axis = 0; axis < 3; ++axis) {
-      const double d = direction[axis];
-      if (std::abs(d) > 1e-12) {
-        const double wall = (block[axis] + (d > 0.0 ? 1 : 0)) * side;
-        exit_m = std::min(exit_m, (wall - p[axis]) / d);
-      }
-    }
-    exit_m = std::max(exit_m, 0.0);
+  if (!grid_.voxelOf(p, voxel)) {
+    exit_m = grid_.voxelSize();
     return false;
   }
-  exit_m = grid_.voxelSize();
+  findBlocks(voxel, voxel);
+  const int block = blocks_[0];
+  if (block >= 0 && (active_ == nullptr || active_->active(block, voxel))) {
+    return true;
+  }
+  const double size = grid_.voxelSize();
+  if (block < 0 || active_->mask(block) == 0) {
+    exit_m = cubeExit(BlockGrid::blockOf(voxel), size * kBlockSide, p, direction);
+  } else {
+    const Eigen::Vector3i cell(voxel.x() >> 2, voxel.y() >> 2, voxel.z() >> 2);
+    exit_m = cubeExit(cell, size * kCellSide, p, direction);
+  }
   return false;
 }
 

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 
+#include "model/active_cells.h"
 #include "model/block_grid.h"
 
 namespace sonarcarve {
@@ -38,13 +39,17 @@ struct VoxelStencil {
 /// Reads the grid around world points; remembers the blocks it last found.
 class StencilReader {
  public:
-  explicit StencilReader(const BlockGrid& grid) : grid_(grid) {}
+  /// `active` (optional, must outlive the reader): the cells a march samples; without, every
+  /// cell of every present block.
+  explicit StencilReader(const BlockGrid& grid, const ActiveCells* active = nullptr)
+      : grid_(grid), active_(active) {}
 
   const Eigen::AlignedBox3d& bounds() const { return grid_.bounds(); }
 
-  /// Whether the voxel that contains `p` lies in a present block; if not, `exit_m` is how far
-  /// along `direction` from `p` the ray leaves that (absent) block.
-  bool inPresentBlock(const Eigen::Vector3d& p, const Eigen::Vector3d& direction, double& exit_m);
+  /// Whether the voxel that contains `p` lies in an active cell of a present block; if not,
+  /// `exit_m` is how far along `direction` from `p` the ray leaves that (absent) block, or that
+  /// block's inactive cell (the whole block if none of its cells is active).
+  bool inSampledCell(const Eigen::Vector3d& p, const Eigen::Vector3d& direction, double& exit_m);
   /// Weights and the eight corners' logits (cheap: enough for the occupancy).
   void readCorners(const Eigen::Vector3d& p, VoxelStencil& stencil);
   /// The rest of the patch's logits and the corners' reflectance.
@@ -55,6 +60,7 @@ class StencilReader {
   std::int64_t indexOf(const Eigen::Vector3i& voxel) const;
 
   const BlockGrid& grid_;
+  const ActiveCells* active_;
   Eigen::Vector3i block_lo_{0, 0, 0};
   Eigen::Vector3i block_hi_{0, 0, 0};
   std::array<int, 8> blocks_{};  // of block_lo_ / block_hi_ on each axis

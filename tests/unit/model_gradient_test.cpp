@@ -189,6 +189,39 @@ TEST(ModelGradient, EveryDerivativeMatchesCentralDifferences) {
       worst_logit, worst_rho, worst_knot, worst_pose, worst_other);
 }
 
+// One march shared by the prediction and the gradient (a FrameTrace) gives what two give, for
+// every beam and for a step's subset of beams.
+TEST(ModelGradient, TracedFrameGivesThePredictionAndGradientOfTwoMarches) {
+  Fixture f;
+  for (const int stride : {1, 3}) {
+    ModelSettings settings = f.settings;
+    settings.beam_stride = stride;
+    settings.beam_offset = stride - 1;
+    const ForwardModel model(f.sonar, settings, f.pool);
+    FrameTrace trace;
+    model.trace(f.grid, f.view, trace);
+    EXPECT_GT(trace.samples(), 1000u);
+    EXPECT_EQ(cv::norm(model.predict(trace, f.view), model.predict(f.grid, f.view), cv::NORM_INF),
+              0.0);
+    const ModelGradient traced = model.gradient(trace, f.grid, f.view, f.weights);
+    const ModelGradient marched = model.gradient(f.grid, f.view, f.weights);
+    // Sums in another order per thread: equal to rounding.
+    const auto close = [](const std::vector<double>& a, const std::vector<double>& b) {
+      double worst = 0.0;
+      double scale = 0.0;
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        worst = std::max(worst, std::abs(a[i] - b[i]));
+        scale = std::max(scale, std::abs(b[i]));
+      }
+      return worst <= 1e-12 * scale;
+    };
+    EXPECT_TRUE(close(traced.logits, marched.logits)) << stride;
+    EXPECT_TRUE(close(traced.reflectance, marched.reflectance)) << stride;
+    EXPECT_TRUE(close(traced.knots_db, marched.knots_db)) << stride;
+    EXPECT_LE((traced.twist - marched.twist).norm(), 1e-12 * marched.twist.norm()) << stride;
+  }
+}
+
 TEST(ModelGradient, SpeckleNllGradientMatchesCentralDifferences) {
   cv::Mat predicted(4, 5, CV_64F), observed(4, 5, CV_32F);
   cv::randu(predicted, 0.5, 3.0);
