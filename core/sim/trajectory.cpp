@@ -96,13 +96,13 @@ Trajectory descents(const TrajectorySpec& spec, const InspectionTarget& target) 
 Trajectory levelOrbits(const TrajectorySpec& spec, const InspectionTarget& target) {
   Trajectory traj{{}, defaultMounting(degToRad(spec.view_tilt_deg))};
   const double circumference = 2.0 * std::numbers::pi * spec.standoff_m;
-  const int per_level = std::max(3, static_cast<int>(std::round(spec.laps * circumference /
-                                                                 spec.step_m)));
+  const int per_level =
+      std::max(3, static_cast<int>(std::round(spec.laps * circumference / spec.step_m)));
   const double angle_step = 2.0 * std::numbers::pi * spec.laps / per_level;
   double time = spec.start_time_s;
   for (int level = 0; level < spec.orbit_levels; ++level) {
-    const double aim = target.axis_point_m.z() +
-                       (level - 0.5 * (spec.orbit_levels - 1)) * spec.level_spacing_m;
+    const double aim =
+        target.axis_point_m.z() + (level - 0.5 * (spec.orbit_levels - 1)) * spec.level_spacing_m;
     double depth = aim - aimRaise(spec);
     if (target.seabed_down_m > 0.0) {
       depth = std::min(depth, target.seabed_down_m - spec.seabed_clearance_m);

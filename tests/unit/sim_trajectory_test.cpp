@@ -109,8 +109,7 @@ TEST(Trajectory, TiltedDescentsAimTheSonarAxisAtTheDepthsTheLevelOnesInspect) {
     EXPECT_NEAR(crossing.miss_m, 0.0, 1e-9);
     const double inspected = level.T_world_sonar(i % level.poses.size()).translation().z();
     EXPECT_NEAR(crossing.depth_m, inspected, 1e-9);
-    EXPECT_NEAR(T.translation().z(), inspected - spec.standoff_m * std::tan(degToRad(25.0)),
-                1e-9);
+    EXPECT_NEAR(T.translation().z(), inspected - spec.standoff_m * std::tan(degToRad(25.0)), 1e-9);
   }
 }
 
