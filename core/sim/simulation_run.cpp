@@ -36,7 +36,11 @@ std::string settingsYaml(const SimulationRequest& r, const std::optional<SeabedF
       << "  line_length_m: " << shortestNumber(t.line_length_m) << "\n"
       << "  survey_width_m: " << shortestNumber(t.survey_width_m) << "\n"
       << "  laps: " << shortestNumber(t.laps) << "\n"
-      << "  frames: " << t.frames << "\n";
+      << "  frames: " << t.frames << "\n"
+      << "  orbit_levels: " << t.orbit_levels << "\n"
+      << "  level_spacing_m: " << shortestNumber(t.level_spacing_m) << "\n"
+      << "  descents: " << t.descents << "\n"
+      << "  view_tilt_deg: " << shortestNumber(t.view_tilt_deg) << "\n";
   if (f) {
     out << "field:\n"
         << "  seed: " << f->seed << "\n"
