@@ -29,6 +29,7 @@ struct SimulateOptions {
   TrajectorySpec survey;           // speed, lawnmower, orbit and descents settings, frames
   double tilt_deg = std::nan("");  // given: the sonar's pitch for any trajectory
   std::uint64_t field_seed = 1;
+  SeabedReliefSpec relief;  // under a structure scene; its seed is field_seed
   int max_frames = -1;
   std::uint64_t seed = 1;
   NavErrorSpec nav_error;
@@ -117,9 +118,16 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   imaging.tvg_exponent = o.tvg_exponent;
   // The seabed field is surveyed as a field: only its tiles near the sonar are built.
   const bool field = o.scene == "seabed-field";
+  SeabedReliefSpec relief = o.relief;
+  relief.seed = o.field_seed;
+  if (relief.relief_m > 0.0 && (field || !isDemoScene(o.scene))) {
+    throw Error("--seabed-relief", o.scene,
+                "expected a demo scene with a seabed (riser, jacket-node, seabed-objects, "
+                "manifold); the seabed field has its own relief and a mesh file its own seabed");
+  }
   const SimulationRequest request{
       field                  ? Scene{}
-      : isDemoScene(o.scene) ? makeDemoScene(o.scene)
+      : isDemoScene(o.scene) ? makeDemoScene(o.scene, relief)
                              : loadSceneMesh(o.scene, o.reflectivity),
       o.scene,
       simulatedSonar(o),
@@ -135,7 +143,7 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   TerminalProgress progress;
   const SimulationResult result = runSimulation(
       request, progress, pool,
-      field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt);
+      field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt, relief);
   progress.finish();
   std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
             << result.frames_written << " frames of '" << (field ? o.scene : request.scene.name)
@@ -236,7 +244,20 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--field-seed", o->field_seed,
                   "seabed-field: seed of the field's relief and objects (the same seed, the same "
-                  "field)")
+                  "field); also of --seabed-relief's waves")
+      ->capture_default_str();
+  cmd->add_option(
+         "--seabed-relief", o->relief.relief_m,
+         "Amplitude of a relief, m, replacing the flat seabed of riser, jacket-node (which "
+         "then stands on a seabed at 20 m), seabed-objects and manifold: a heightfield of "
+         "three waves of seeded headings (--field-seed), levelled where the structure "
+         "stands; 0: the flat seabed")
+      ->check(CLI::Range(0.0, 5.0))
+      ->capture_default_str();
+  cmd->add_option("--seabed-wavelength", o->relief.wavelength_m,
+                  "With --seabed-relief: the relief's waves have wavelengths between this and "
+                  "twice it, m")
+      ->check(CLI::Range(1.0, 1000.0))
       ->capture_default_str();
   cmd->add_option("--max-frames", o->max_frames, "Stop after this many frames")
       ->check(CLI::Range(0, kMaxSimFrames));
