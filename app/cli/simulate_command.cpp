@@ -26,8 +26,10 @@ struct SimulateOptions {
   std::string out;
   double standoff_m = 4.5;
   double step_m = 0.1;
-  TrajectorySpec survey;  // speed, lawnmower and orbit settings, frames
+  TrajectorySpec survey;           // speed, lawnmower, orbit and descents settings, frames
+  double tilt_deg = std::nan("");  // given: the sonar's pitch for any trajectory
   std::uint64_t field_seed = 1;
+  SeabedReliefSpec relief;  // under a structure scene; its seed is field_seed
   int max_frames = -1;
   std::uint64_t seed = 1;
   NavErrorSpec nav_error;
@@ -102,6 +104,10 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   trajectory.kind = o.trajectory == "auto" ? usualTrajectory(o.scene) : o.trajectory;
   trajectory.standoff_m = o.standoff_m;
   trajectory.step_m = o.step_m;
+  if (!std::isnan(o.tilt_deg)) {
+    trajectory.tilt_deg = o.tilt_deg;
+    trajectory.view_tilt_deg = o.tilt_deg;
+  }
   ImagingSettings imaging;
   imaging.elevation_step_rad = degToRad(o.elevation_step_deg);
   imaging.rays_per_beam = o.rays_per_beam;
@@ -112,9 +118,16 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   imaging.tvg_exponent = o.tvg_exponent;
   // The seabed field is surveyed as a field: only its tiles near the sonar are built.
   const bool field = o.scene == "seabed-field";
+  SeabedReliefSpec relief = o.relief;
+  relief.seed = o.field_seed;
+  if (relief.relief_m > 0.0 && (field || !isDemoScene(o.scene))) {
+    throw Error("--seabed-relief", o.scene,
+                "expected a demo scene with a seabed (riser, jacket-node, seabed-objects, "
+                "manifold); the seabed field has its own relief and a mesh file its own seabed");
+  }
   const SimulationRequest request{
       field                  ? Scene{}
-      : isDemoScene(o.scene) ? makeDemoScene(o.scene)
+      : isDemoScene(o.scene) ? makeDemoScene(o.scene, relief)
                              : loadSceneMesh(o.scene, o.reflectivity),
       o.scene,
       simulatedSonar(o),
@@ -130,7 +143,7 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   TerminalProgress progress;
   const SimulationResult result = runSimulation(
       request, progress, pool,
-      field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt);
+      field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt, relief);
   progress.finish();
   std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
             << result.frames_written << " frames of '" << (field ? o.scene : request.scene.name)
@@ -165,7 +178,8 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "NED metres")
       ->required();
   cmd->add_option("--trajectory", o->trajectory,
-                  "vertical | orbit | lawnmower | navigation CSV of vehicle poses; auto picks the "
+                  "vertical | orbit | descents (vertical descents from --descents headings around "
+                  "the structure) | lawnmower | navigation CSV of vehicle poses; auto picks the "
                   "scene's usual one")
       ->capture_default_str();
   cmd->add_option("--noise", o->noise,
@@ -188,7 +202,9 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "the east); 0: one lap, or the lines of a --survey-width square")
       ->check(CLI::Range(0, kMaxSimFrames))
       ->capture_default_str();
-  cmd->add_option("--laps", o->survey.laps, "orbit: turns around the axis (without --frames)")
+  cmd->add_option("--laps", o->survey.laps,
+                  "orbit: turns around the axis (without --frames), on each level with "
+                  "--orbit-levels")
       ->check(CLI::Range(0.01, 10000.0))
       ->capture_default_str();
   cmd->add_option("--line-length", o->survey.line_length_m, "lawnmower: length of a line, m")
@@ -205,13 +221,43 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
   cmd->add_option("--altitude", o->survey.altitude_m, "lawnmower: height above the seabed, m")
       ->check(CLI::Range(0.1, 1000.0))
       ->capture_default_str();
-  cmd->add_option("--tilt", o->survey.tilt_deg,
-                  "lawnmower: sonar pitch on the vehicle, deg (negative = down)")
-      ->check(CLI::Range(-90.0, 90.0))
+  cmd->add_option("--tilt", o->tilt_deg,
+                  "Sonar pitch on the vehicle, deg (negative = down). lawnmower: -30 if not "
+                  "given; vertical, orbit and descents: level if not given, and when tilted the "
+                  "sonar is raised so that its axis meets the structure's axis at the depth it "
+                  "inspects")
+      ->check(CLI::Range(-79.0, 79.0));
+  cmd->add_option("--orbit-levels", o->survey.orbit_levels,
+                  "orbit: 0, one circle descending over the structure's depth span; N >= 1, N "
+                  "level circles of --laps turns, aimed at depths --level-spacing apart centred "
+                  "on the structure's axis point, top first")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+  cmd->add_option("--level-spacing", o->survey.level_spacing_m,
+                  "orbit levels: distance between the depths they aim at, m")
+      ->check(CLI::Range(0.05, 100.0))
+      ->capture_default_str();
+  cmd->add_option("--descents", o->survey.descents,
+                  "descents: how many vertical descents, from headings evenly spaced around the "
+                  "structure (the first from the south, as vertical's)")
+      ->check(CLI::Range(1, 360))
       ->capture_default_str();
   cmd->add_option("--field-seed", o->field_seed,
                   "seabed-field: seed of the field's relief and objects (the same seed, the same "
-                  "field)")
+                  "field); also of --seabed-relief's waves")
+      ->capture_default_str();
+  cmd->add_option(
+         "--seabed-relief", o->relief.relief_m,
+         "Amplitude of a relief, m, replacing the flat seabed of riser, jacket-node (which "
+         "then stands on a seabed at 20 m), seabed-objects and manifold: a heightfield of "
+         "three waves of seeded headings (--field-seed), levelled where the structure "
+         "stands; 0: the flat seabed")
+      ->check(CLI::Range(0.0, 5.0))
+      ->capture_default_str();
+  cmd->add_option("--seabed-wavelength", o->relief.wavelength_m,
+                  "With --seabed-relief: the relief's waves have wavelengths between this and "
+                  "twice it, m")
+      ->check(CLI::Range(1.0, 1000.0))
       ->capture_default_str();
   cmd->add_option("--max-frames", o->max_frames, "Stop after this many frames")
       ->check(CLI::Range(0, kMaxSimFrames));

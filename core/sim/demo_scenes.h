@@ -15,13 +15,16 @@
 #include <vector>
 
 #include "geometry/scene.h"
+#include "sim/scene_seabed.h"
 
 namespace sonarcarve {
 
 std::vector<std::string> demoSceneNames();
 bool isDemoScene(const std::string& name);
-/// Throws Error for an unknown name.
-Scene makeDemoScene(const std::string& name);
+/// Throws Error for an unknown name. `relief` (default: none) replaces the flat seabed of the
+/// riser, the jacket node (which then stands on one at 20 m), seabed-objects and the manifold
+/// with one with relief (sim/scene_seabed.h); the seabed field keeps its own.
+Scene makeDemoScene(const std::string& name, const SeabedReliefSpec& relief = {});
 /// The trajectory a scene is usually inspected with: lawnmower over seabed-objects, the
 /// manifold and the seabed field, vertical otherwise (a loaded mesh included).
 std::string usualTrajectory(const std::string& scene);

@@ -46,25 +46,12 @@ void validate(const SeabedFieldSpec& spec) {
   requireIn(spec.max_objects_per_tile, 0, 20, "max_objects_per_tile");
 }
 
-SeabedField::SeabedField(SeabedFieldSpec spec) : spec_(spec) {
-  validate(spec_);
-  std::mt19937_64 rng(mix(spec_.seed ^ 0x5eabedULL));
-  std::uniform_real_distribution<double> wavelength(15.0, 40.0), angle(0.0, 2.0 * std::numbers::pi);
-  for (int k = 0; k < 3; ++k) {
-    const double heading = angle(rng);
-    wave_[k] = 2.0 * std::numbers::pi / wavelength(rng) *
-               Eigen::Vector2d(std::cos(heading), std::sin(heading));
-    phase_[k] = angle(rng);
-  }
-}
+SeabedField::SeabedField(SeabedFieldSpec spec)
+    : spec_((validate(spec), spec)),
+      relief_(mix(spec_.seed ^ 0x5eabedULL), spec_.relief_m, 15.0, 40.0) {}
 
 double SeabedField::seabedDown(double north_m, double east_m) const {
-  const Eigen::Vector2d p(north_m, east_m);
-  double sum = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    sum += std::sin(wave_[k].dot(p) + phase_[k]);
-  }
-  return spec_.depth_m + spec_.relief_m * sum / 3.0;
+  return spec_.depth_m + relief_.offsetDown(Eigen::Vector2d(north_m, east_m));
 }
 
 Eigen::Vector2i SeabedField::tileOf(double north_m, double east_m) const {
@@ -76,37 +63,14 @@ void SeabedField::addSeabed(const Eigen::Vector2i& tile, Scene& scene) const {
   const int cells = static_cast<int>(std::round(spec_.tile_m / spec_.grid_m));
   const double step = spec_.tile_m / cells;
   const Eigen::Vector2d origin = spec_.tile_m * tile.cast<double>();
-  Scene seabed;
-  seabed.name = "seabed";
-  for (int i = 0; i <= cells; ++i) {
-    for (int j = 0; j <= cells; ++j) {
-      const Eigen::Vector2d p = origin + step * Eigen::Vector2d(i, j);
-      // The normal of the surface down = f(north, east), pointing up (-down).
-      Eigen::Vector2d slope = Eigen::Vector2d::Zero();
-      for (int k = 0; k < 3; ++k) {
-        slope += std::cos(wave_[k].dot(p) + phase_[k]) * wave_[k];
-      }
-      slope *= spec_.relief_m / 3.0;
-      seabed.vertices.emplace_back(p.cast<float>().x(), p.cast<float>().y(),
-                                   static_cast<float>(seabedDown(p.x(), p.y())));
-      seabed.normals.push_back(
-          Eigen::Vector3f(static_cast<float>(slope.x()), static_cast<float>(slope.y()), -1.0f)
-              .normalized());
-    }
-  }
-  const auto vertex = [&](int i, int j) { return static_cast<std::uint32_t>(i * (cells + 1) + j); };
-  for (int i = 0; i < cells; ++i) {
-    for (int j = 0; j < cells; ++j) {
-      // Sediment patches: the reflectivity varies slowly over tens of metres.
-      const Eigen::Vector2d centre = origin + step * Eigen::Vector2d(i + 0.5, j + 0.5);
-      const float reflectivity =
-          static_cast<float>(0.3 + 0.05 * std::sin(0.7 * wave_[1].dot(centre) + phase_[2]));
-      seabed.triangles.push_back({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
-      seabed.triangles.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
-      seabed.reflectivity.insert(seabed.reflectivity.end(), 2, reflectivity);
-    }
-  }
-  scene.append(seabed);
+  scene.append(heightfieldMesh(
+      origin, cells, step, [&](const Eigen::Vector2d& p) { return seabedDown(p.x(), p.y()); },
+      [&](const Eigen::Vector2d& p) { return relief_.slope(p); },
+      [&](const Eigen::Vector2d& centre) {
+        // Sediment patches: the reflectivity varies slowly over tens of metres.
+        return static_cast<float>(
+            0.3 + 0.05 * std::sin(0.7 * relief_.wave(1).dot(centre) + relief_.phase(2)));
+      }));
 }
 
 void SeabedField::addObjects(const Eigen::Vector2i& tile, Scene& scene) const {

@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "geometry/scene.h"
+#include "sim/seabed_relief.h"
 
 namespace sonarcarve {
 
@@ -48,8 +49,7 @@ class SeabedField {
   void addSeabed(const Eigen::Vector2i& tile, Scene& scene) const;
   void addObjects(const Eigen::Vector2i& tile, Scene& scene) const;
   SeabedFieldSpec spec_;
-  Eigen::Vector2d wave_[3];  // wave vectors of the relief, radians per metre
-  double phase_[3] = {0, 0, 0};
+  SeabedRelief relief_;  // three long waves, 15 to 40 m
 };
 
 }  // namespace sonarcarve

@@ -18,7 +18,8 @@ namespace sonarcarve {
 namespace {
 
 std::string settingsYaml(const SimulationRequest& r, const std::optional<SeabedFieldSpec>& f,
-                         std::size_t frames, double traced_elevation_rad) {
+                         const SeabedReliefSpec& relief, std::size_t frames,
+                         double traced_elevation_rad) {
   std::ostringstream out;
   const auto& t = r.trajectory;
   out << "# Settings this mission was simulated with (sonarcarve-cli simulate).\n"
@@ -36,7 +37,11 @@ std::string settingsYaml(const SimulationRequest& r, const std::optional<SeabedF
       << "  line_length_m: " << shortestNumber(t.line_length_m) << "\n"
       << "  survey_width_m: " << shortestNumber(t.survey_width_m) << "\n"
       << "  laps: " << shortestNumber(t.laps) << "\n"
-      << "  frames: " << t.frames << "\n";
+      << "  frames: " << t.frames << "\n"
+      << "  orbit_levels: " << t.orbit_levels << "\n"
+      << "  level_spacing_m: " << shortestNumber(t.level_spacing_m) << "\n"
+      << "  descents: " << t.descents << "\n"
+      << "  view_tilt_deg: " << shortestNumber(t.view_tilt_deg) << "\n";
   if (f) {
     out << "field:\n"
         << "  seed: " << f->seed << "\n"
@@ -45,6 +50,12 @@ std::string settingsYaml(const SimulationRequest& r, const std::optional<SeabedF
         << "  tile_m: " << shortestNumber(f->tile_m) << "\n"
         << "  grid_m: " << shortestNumber(f->grid_m) << "\n"
         << "  max_objects_per_tile: " << f->max_objects_per_tile << "\n";
+  }
+  if (relief.relief_m > 0.0) {
+    out << "seabed_relief:\n"
+        << "  relief_m: " << shortestNumber(relief.relief_m) << "\n"
+        << "  wavelength_m: " << shortestNumber(relief.wavelength_m) << "\n"
+        << "  seed: " << relief.seed << "\n";
   }
   out << "imaging:\n"
       << "  elevation_step_deg: " << shortestDegrees(r.imaging.elevation_step_rad) << "\n"
@@ -95,7 +106,8 @@ SonarModel paperSonar(const std::string& id) {
 }
 
 SimulationResult runSimulation(const SimulationRequest& request, Progress& progress,
-                               ThreadPool& pool, const std::optional<SeabedFieldSpec>& field_spec) {
+                               ThreadPool& pool, const std::optional<SeabedFieldSpec>& field_spec,
+                               const SeabedReliefSpec& relief) {
   const std::optional<SeabedField> field =
       field_spec ? std::optional<SeabedField>(SeabedField(*field_spec)) : std::nullopt;
   const Trajectory trajectory =
@@ -171,8 +183,9 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   if (!request.empty_water && keep_visible) {
     writePointsPly(visible.points(), request.output / "visible_points.ply");
   }
-  writeFileAtomically(request.output / "simulation.yaml",
-                      settingsYaml(request, field_spec, written, renderer.tracedElevation()));
+  writeFileAtomically(
+      request.output / "simulation.yaml",
+      settingsYaml(request, field_spec, relief, written, renderer.tracedElevation()));
   result.visible_points = visible.size();
   result.most_triangles_traced = renderer.mostTriangles();
   result.ground_truth_triangles =

@@ -19,6 +19,7 @@
 #include "common/thread_pool.h"
 #include "geometry/scene.h"
 #include "sim/noise.h"
+#include "sim/scene_seabed.h"
 #include "sim/seabed_field.h"
 #include "sim/sonar_simulator.h"
 #include "sim/trajectory.h"
@@ -52,9 +53,11 @@ SonarModel paperSonar(const std::string& id = "sim-sonar");
 
 /// Renders each frame in parallel on `pool`, and noises, encodes and writes it on a thread of
 /// its own while the next one renders. With `field`, surveys that seabed field instead of the
-/// request's scene (whose name and target are then unused).
+/// request's scene (whose name and target are then unused). `relief`: the one the scene's
+/// seabed was built with (sim/scene_seabed.h), recorded in simulation.yaml.
 SimulationResult runSimulation(const SimulationRequest& request, Progress& progress,
                                ThreadPool& pool,
-                               const std::optional<SeabedFieldSpec>& field = std::nullopt);
+                               const std::optional<SeabedFieldSpec>& field = std::nullopt,
+                               const SeabedReliefSpec& relief = {});
 
 }  // namespace sonarcarve

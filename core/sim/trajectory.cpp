@@ -33,33 +33,100 @@ void requireSpan(const InspectionTarget& t, const std::string& kind) {
   }
 }
 
-Trajectory vertical(const TrajectorySpec& spec, const InspectionTarget& target) {
-  requireSpan(target, "vertical");
-  Trajectory traj{{}, defaultMounting(0.0)};
-  const Eigen::Vector3d axis = target.axis_point_m;
+// How far above the depth it inspects the sonar sits: pitched by `view_tilt_deg`, its axis
+// meets the structure's axis there, `standoff_m` away.
+double aimRaise(const TrajectorySpec& spec) {
+  return spec.standoff_m * std::tan(-degToRad(spec.view_tilt_deg));
+}
+
+// The deepest depth a vertical descent or an orbit inspects: the target's bottom, kept
+// `seabed_clearance_m` above a seabed.
+double inspectedBottom(const TrajectorySpec& spec, const InspectionTarget& target) {
+  return target.seabed_down_m > 0.0
+             ? std::min(target.bottom_down_m, target.seabed_down_m - spec.seabed_clearance_m)
+             : target.bottom_down_m;
+}
+
+// The position facing the axis from `heading` (the direction the sonar looks), `standoff_m`
+// away, at `depth`.
+Eigen::Vector3d facingAxis(const TrajectorySpec& spec, const InspectionTarget& target,
+                           double heading, double depth) {
+  return {target.axis_point_m.x() - spec.standoff_m * std::cos(heading),
+          target.axis_point_m.y() - spec.standoff_m * std::sin(heading), depth};
+}
+
+// One vertical descent looking along `heading`, from `start_time_s`, appended to `traj`.
+void addDescent(const TrajectorySpec& spec, const InspectionTarget& target, double heading,
+                double start_time_s, Trajectory& traj) {
   // Start above the top by the clearance, so that views from above carve the water over it.
   const double top = target.top_down_m - spec.top_clearance_m;
-  const double bottom =
-      target.seabed_down_m > 0.0
-          ? std::min(target.bottom_down_m, target.seabed_down_m - spec.seabed_clearance_m)
-          : target.bottom_down_m;
+  const double bottom = inspectedBottom(spec, target);
+  const double raise = aimRaise(spec);
   const int frames = static_cast<int>(std::floor((bottom - top) / spec.step_m + 1e-9)) + 1;
   for (int i = 0; i < frames; ++i) {
-    const Eigen::Vector3d sonar(axis.x() - spec.standoff_m, axis.y(), top + i * spec.step_m);
-    traj.poses.push_back(vehicleFor(spec.start_time_s + i * spec.step_m / spec.speed_mps, sonar,
-                                    0.0, traj.mounting));
+    const Eigen::Vector3d sonar = facingAxis(spec, target, heading, top + i * spec.step_m - raise);
+    traj.poses.push_back(
+        vehicleFor(start_time_s + i * spec.step_m / spec.speed_mps, sonar, heading, traj.mounting));
+  }
+}
+
+Trajectory vertical(const TrajectorySpec& spec, const InspectionTarget& target) {
+  requireSpan(target, "vertical");
+  Trajectory traj{{}, defaultMounting(degToRad(spec.view_tilt_deg))};
+  addDescent(spec, target, 0.0, spec.start_time_s, traj);
+  return traj;
+}
+
+Trajectory descents(const TrajectorySpec& spec, const InspectionTarget& target) {
+  requireSpan(target, "descents");
+  Trajectory traj{{}, defaultMounting(degToRad(spec.view_tilt_deg))};
+  const double turn = 2.0 * std::numbers::pi / spec.descents;
+  // Between descents the vehicle climbs back and moves round to the next heading.
+  const double climb = target.top_down_m - spec.top_clearance_m - inspectedBottom(spec, target);
+  double time = spec.start_time_s;
+  for (int d = 0; d < spec.descents; ++d) {
+    addDescent(spec, target, d * turn, time, traj);
+    time = traj.poses.back().time_s + (std::abs(climb) + turn * spec.standoff_m) / spec.speed_mps;
+  }
+  return traj;
+}
+
+// Level circles of `laps` turns, aimed at depths `level_spacing_m` apart around the target's
+// axis point, the top one first; the sonar stays `seabed_clearance_m` above a seabed.
+Trajectory levelOrbits(const TrajectorySpec& spec, const InspectionTarget& target) {
+  Trajectory traj{{}, defaultMounting(degToRad(spec.view_tilt_deg))};
+  const double circumference = 2.0 * std::numbers::pi * spec.standoff_m;
+  const int per_level =
+      std::max(3, static_cast<int>(std::round(spec.laps * circumference / spec.step_m)));
+  const double angle_step = 2.0 * std::numbers::pi * spec.laps / per_level;
+  double time = spec.start_time_s;
+  for (int level = 0; level < spec.orbit_levels; ++level) {
+    const double aim =
+        target.axis_point_m.z() + (level - 0.5 * (spec.orbit_levels - 1)) * spec.level_spacing_m;
+    double depth = aim - aimRaise(spec);
+    if (target.seabed_down_m > 0.0) {
+      depth = std::min(depth, target.seabed_down_m - spec.seabed_clearance_m);
+    }
+    for (int i = 0; i < per_level; ++i) {
+      const double angle = i * angle_step;  // position angle around the axis
+      traj.poses.push_back(
+          vehicleFor(time, facingAxis(spec, target, angle, depth), angle, traj.mounting));
+      time += spec.step_m / spec.speed_mps;
+    }
+    time += spec.level_spacing_m / spec.speed_mps;  // down to the next level
   }
   return traj;
 }
 
 Trajectory orbit(const TrajectorySpec& spec, const InspectionTarget& target) {
   requireSpan(target, "orbit");
-  Trajectory traj{{}, defaultMounting(0.0)};
+  if (spec.orbit_levels > 0) {
+    return levelOrbits(spec, target);
+  }
+  Trajectory traj{{}, defaultMounting(degToRad(spec.view_tilt_deg))};
   const double top = target.top_down_m;
-  const double bottom =
-      target.seabed_down_m > 0.0
-          ? std::min(target.bottom_down_m, target.seabed_down_m - spec.seabed_clearance_m)
-          : target.bottom_down_m;
+  const double bottom = inspectedBottom(spec, target);
+  const double raise = aimRaise(spec);
   const double circumference = 2.0 * std::numbers::pi * spec.standoff_m;
   // The last frame closes the last lap; with `frames` set, as many laps as those frames make.
   const int frames =
@@ -73,7 +140,7 @@ Trajectory orbit(const TrajectorySpec& spec, const InspectionTarget& target) {
     const double angle = 2.0 * std::numbers::pi * laps * u;  // position angle around the axis
     const Eigen::Vector3d sonar(target.axis_point_m.x() - spec.standoff_m * std::cos(angle),
                                 target.axis_point_m.y() - spec.standoff_m * std::sin(angle),
-                                top + u * (bottom - top));
+                                top + u * (bottom - top) - raise);
     traj.poses.push_back(vehicleFor(spec.start_time_s + i * spec.step_m / spec.speed_mps, sonar,
                                     angle, traj.mounting));
   }
@@ -123,11 +190,21 @@ Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& ta
                 "expected positive line length, line spacing and laps, and no negative survey "
                 "width or frames");
   }
+  if (spec.orbit_levels < 0 || spec.orbit_levels > 100 || spec.descents < 1 ||
+      spec.descents > 360 || !(spec.level_spacing_m > 0.0) ||
+      !(std::abs(spec.view_tilt_deg) < 80.0)) {
+    throw Error("trajectory", spec.kind,
+                "expected 0 to 100 orbit levels, 1 to 360 descents, a positive level spacing "
+                "and a view tilt within +-80 degrees");
+  }
   if (spec.kind == "vertical") {
     return vertical(spec, target);
   }
   if (spec.kind == "orbit") {
     return orbit(spec, target);
+  }
+  if (spec.kind == "descents") {
+    return descents(spec, target);
   }
   if (spec.kind == "lawnmower") {
     return lawnmower(spec, target);
@@ -137,7 +214,8 @@ Trajectory makeTrajectory(const TrajectorySpec& spec, const InspectionTarget& ta
     return Trajectory{track.samples(), defaultMounting(0.0)};
   }
   throw Error("trajectory", spec.kind,
-              "unknown trajectory: expected vertical, orbit, lawnmower or a .csv of poses");
+              "unknown trajectory: expected vertical, orbit, descents, lawnmower or a .csv of "
+              "poses");
 }
 
 unsigned navAxesFromNames(const std::string& names) {

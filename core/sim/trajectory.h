@@ -4,7 +4,12 @@
 //              `standoff_m`, moved down in `step_m` steps over the target's depth span,
 //              down to `seabed_clearance_m` above the seabed
 //   orbit      a descending circle of radius `standoff_m` around the axis, sonar facing in,
-//              `laps` turns over the depth span, `step_m` apart along the circle
+//              `laps` turns over the depth span, `step_m` apart along the circle; with
+//              `orbit_levels` set, that many level circles instead, one above the other
+//   descents   `descents` vertical descents like `vertical`, from headings 360/descents
+//              degrees apart around the axis (one descent: `vertical` itself)
+// vertical, orbit and descents pitch the sonar by `view_tilt_deg` and raise it so that its
+// axis meets the structure's axis at the depth it inspects (tilted down, it looks down at it).
 //   lawnmower  parallel north-south lines `line_length_m` long and `line_spacing_m` apart,
 //              from the west of a `survey_width_m` square, at `altitude_m` above the
 //              seabed, sonar pitched down `tilt_deg`, `step_m` apart along the lines
@@ -27,7 +32,7 @@
 namespace sonarcarve {
 
 struct TrajectorySpec {
-  std::string kind = "vertical";  ///< vertical | orbit | lawnmower | path to a CSV
+  std::string kind = "vertical";  ///< vertical | orbit | descents | lawnmower | path to a CSV
   double standoff_m = 4.5;        ///< horizontal distance from sonar to the target's axis
   double step_m = 0.1;            ///< distance between consecutive frames
   double speed_mps = 0.1;         ///< vehicle speed, sets the time between frames
@@ -36,7 +41,16 @@ struct TrajectorySpec {
   double tilt_deg = -30.0;        ///< lawnmower: sonar pitch on the vehicle (negative = down)
   double line_length_m = 10.0;    ///< lawnmower: length of a line
   double survey_width_m = 10.0;   ///< lawnmower: east-west extent of the lines, without `frames`
-  double laps = 1.0;              ///< orbit: turns around the axis, without `frames`
+  double laps = 1.0;              ///< orbit: turns around the axis (per level), without `frames`
+  /// orbit: 0, one circle descending over the depth span; n >= 1, n level circles of `laps`
+  /// turns each, aimed at depths `level_spacing_m` apart centred on the target's axis point,
+  /// from the top one down (`frames` is then unused).
+  int orbit_levels = 0;
+  double level_spacing_m = 1.5;  ///< orbit levels: between the depths they aim at
+  int descents = 4;              ///< descents: how many, from headings evenly around the axis
+  /// vertical, orbit and descents: sonar pitch on the vehicle (negative = down), its axis
+  /// aimed at the structure's axis.
+  double view_tilt_deg = 0.0;
   /// orbit and lawnmower: the number of frames (0: what `laps` or the survey's square make).
   int frames = 0;
   /// vertical and orbit: lowest sonar depth above the seabed. 1.8 m keeps the seabed out of

@@ -2,12 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "common/angles.h"
+#include "io/mesh/point_cloud_ply.h"
 #include "io/mission/mission.h"
 #include "io/mission/nav_csv.h"
 #include "pipeline/frame_stage.h"
@@ -286,6 +288,39 @@ TEST(CliReconstruct, PoseRefinementWritesTheRefinedTrackAndReportsItsError) {
   ASSERT_EQ(off.exit_code, 0) << off.output;
   EXPECT_FALSE(std::filesystem::exists(out / "refined_nav.csv"));
   EXPECT_EQ(test::readText(out / "report.json").find("\"pose_refinement\""), std::string::npos);
+}
+
+// A seabed relief under the riser: recorded in the settings, and in the ground truth the seabed
+// rises and falls away from the riser (beyond its cables, which end 6 m from it) while it stays
+// levelled where the riser stands.
+TEST(CliSimulate, SeabedReliefIsRecordedAndShapesTheGroundTruth) {
+  test::ScratchDir dir;
+  const auto out = dir.path() / "riser";
+  const auto r =
+      runCli("simulate --scene riser --seabed-relief 0.3 --max-frames 2 --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string settings = test::readText(out / "simulation.yaml");
+  ASSERT_NE(settings.find("seabed_relief:"), std::string::npos) << settings;
+  EXPECT_DOUBLE_EQ(settingValue(settings, "relief_m"), 0.3) << settings;
+  EXPECT_DOUBLE_EQ(settingValue(settings, "wavelength_m"), 6.0) << settings;
+  float lo = INFINITY;
+  float hi = -INFINITY;
+  for (const Eigen::Vector3f& p : readPlyMesh(out / "ground_truth.ply").vertices.positions) {
+    if (p.head<2>().cwiseAbs().maxCoeff() > 6.5f) {  // only the seabed out there
+      lo = std::min(lo, p.z());
+      hi = std::max(hi, p.z());
+    } else if (p.head<2>().norm() < 1.0f && p.z() > 19.0f) {  // the seabed and the riser's foot
+      EXPECT_FLOAT_EQ(p.z(), 20.0f) << p.transpose();
+    }
+  }
+  EXPECT_GT(hi - lo, 0.2f) << lo << " to " << hi;
+  EXPECT_LT(hi - lo, 1.2f) << lo << " to " << hi;  // within twice the amplitude of 20 m
+
+  // The seabed field has a relief of its own.
+  const auto field = runCli("simulate --scene seabed-field --seabed-relief 0.3 --out " +
+                            quoted(dir.path() / "field"));
+  EXPECT_NE(field.exit_code, 0);
+  EXPECT_NE(field.output.find("--seabed-relief"), std::string::npos) << field.output;
 }
 
 TEST(CliSimulate, BadSceneOrTrajectoryFailsWithAMessage) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "common/angles.h"
 #include "common/error.h"
@@ -45,6 +46,104 @@ TEST(Trajectory, OrbitCirclesTheAxisFacingIt) {
     EXPECT_NEAR(to_axis.norm(), spec.standoff_m, 1e-6);
     EXPECT_GT((T.linear() * Eigen::Vector3d::UnitX()).dot(to_axis.normalized()), 0.9999);
   }
+}
+
+// Where the sonar's axis passes the structure's vertical axis through (1, 2): the depth there
+// and how far from it the axis passes.
+struct AxisCrossing {
+  double depth_m = 0.0;
+  double miss_m = 0.0;
+};
+AxisCrossing crossingOfAxis(const Eigen::Isometry3d& T_world_sonar) {
+  const Eigen::Vector3d p = T_world_sonar.translation();
+  const Eigen::Vector3d b = T_world_sonar.linear() * Eigen::Vector3d::UnitX();
+  const Eigen::Vector2d to_axis = Eigen::Vector2d(1.0, 2.0) - p.head<2>();
+  const double t = to_axis.dot(b.head<2>()) / b.head<2>().squaredNorm();
+  const Eigen::Vector3d nearest = p + t * b;
+  return {nearest.z(), (nearest.head<2>() - Eigen::Vector2d(1.0, 2.0)).norm()};
+}
+
+TEST(Trajectory, OneDescentIsTheVerticalPassAndMoreComeFromEvenHeadings) {
+  TrajectorySpec spec;
+  const Trajectory vertical = makeTrajectory(spec, riserLike());
+  spec.kind = "descents";
+  spec.descents = 1;
+  const Trajectory one = makeTrajectory(spec, riserLike());
+  ASSERT_EQ(one.poses.size(), vertical.poses.size());
+  for (std::size_t i = 0; i < one.poses.size(); ++i) {
+    EXPECT_EQ(one.T_world_sonar(i).matrix(), vertical.T_world_sonar(i).matrix()) << i;
+  }
+  spec.descents = 4;
+  const Trajectory four = makeTrajectory(spec, riserLike());
+  const std::size_t per = vertical.poses.size();
+  ASSERT_EQ(four.poses.size(), 4 * per);
+  for (std::size_t d = 0; d < 4; ++d) {
+    const Eigen::Isometry3d T = four.T_world_sonar(d * per + 5);
+    const Eigen::Vector3d to_axis(1.0 - T.translation().x(), 2.0 - T.translation().y(), 0.0);
+    EXPECT_NEAR(to_axis.norm(), spec.standoff_m, 1e-9);
+    // Heading d * 90 degrees: the direction the sonar looks in.
+    const double heading = std::atan2(to_axis.y(), to_axis.x());
+    EXPECT_NEAR(std::remainder(heading - d * std::numbers::pi / 2, 2 * std::numbers::pi), 0.0,
+                1e-9);
+    EXPECT_GT((T.linear() * Eigen::Vector3d::UnitX()).dot(to_axis.normalized()), 0.9999);
+    EXPECT_NEAR(T.translation().z(), vertical.T_world_sonar(5).translation().z(), 1e-9);
+    if (d > 0) {  // time goes on: the vehicle climbs back and moves round between descents
+      EXPECT_GT(four.poses[d * per].time_s, four.poses[d * per - 1].time_s + 1.0);
+    }
+  }
+}
+
+TEST(Trajectory, TiltedDescentsAimTheSonarAxisAtTheDepthsTheLevelOnesInspect) {
+  TrajectorySpec spec;
+  const Trajectory level = makeTrajectory(spec, riserLike());
+  spec.kind = "descents";
+  spec.descents = 3;
+  spec.view_tilt_deg = -25.0;
+  const Trajectory tilted = makeTrajectory(spec, riserLike());
+  ASSERT_EQ(tilted.poses.size(), 3 * level.poses.size());
+  for (std::size_t i = 0; i < tilted.poses.size(); i += 7) {
+    const Eigen::Isometry3d T = tilted.T_world_sonar(i);
+    const Eigen::Vector3d boresight = T.linear() * Eigen::Vector3d::UnitX();
+    EXPECT_NEAR(boresight.z(), std::sin(degToRad(25.0)), 1e-9);  // looking down
+    const AxisCrossing crossing = crossingOfAxis(T);
+    EXPECT_NEAR(crossing.miss_m, 0.0, 1e-9);
+    const double inspected = level.T_world_sonar(i % level.poses.size()).translation().z();
+    EXPECT_NEAR(crossing.depth_m, inspected, 1e-9);
+    EXPECT_NEAR(T.translation().z(), inspected - spec.standoff_m * std::tan(degToRad(25.0)), 1e-9);
+  }
+}
+
+TEST(Trajectory, OrbitLevelsAreLevelCirclesAimedAroundTheAxisPointStepApart) {
+  TrajectorySpec spec;
+  spec.kind = "orbit";
+  spec.orbit_levels = 2;
+  spec.level_spacing_m = 1.6;
+  spec.view_tilt_deg = -20.0;
+  const Trajectory t = makeTrajectory(spec, riserLike());
+  const auto per_level =
+      static_cast<std::size_t>(std::round(2 * std::numbers::pi * spec.standoff_m / spec.step_m));
+  ASSERT_EQ(t.poses.size(), 2 * per_level);
+  for (std::size_t i = 0; i < t.poses.size(); ++i) {
+    const Eigen::Isometry3d T = t.T_world_sonar(i);
+    const Eigen::Vector3d to_axis(1.0 - T.translation().x(), 2.0 - T.translation().y(), 0.0);
+    EXPECT_NEAR(to_axis.norm(), spec.standoff_m, 1e-9);
+    const AxisCrossing crossing = crossingOfAxis(T);
+    EXPECT_NEAR(crossing.miss_m, 0.0, 1e-9);
+    // The top level aims 0.8 m above the axis point (15 m), the other 0.8 m below.
+    EXPECT_NEAR(crossing.depth_m, i < per_level ? 14.2 : 15.8, 1e-9);
+    if (i % per_level != 0) {  // frames step_m apart along the circle (its chord)
+      const double gap = (T.translation() - t.T_world_sonar(i - 1).translation()).norm();
+      EXPECT_NEAR(gap, spec.step_m, 0.01 * spec.step_m);
+    }
+  }
+  // Kept the seabed clearance above the seabed, whatever they aim at.
+  spec.level_spacing_m = 10.0;
+  spec.view_tilt_deg = 0.0;
+  const Trajectory deep = makeTrajectory(spec, riserLike());
+  EXPECT_NEAR(deep.T_world_sonar(deep.poses.size() - 1).translation().z(),
+              20.0 - spec.seabed_clearance_m, 1e-9);
+  spec.orbit_levels = -1;
+  EXPECT_THROW(makeTrajectory(spec, riserLike()), Error);
 }
 
 TEST(Trajectory, LawnmowerLooksDownAtTheSeabedFromItsAltitude) {
