@@ -1,6 +1,6 @@
-// The two file primitives every reader and writer goes through: io/files/input_file.h (only regular
+// The file primitives every reader and writer goes through: io/files/input_file.h (only regular
 // files are read) and io/files/atomic_file.h (a write either completes or leaves the previous
-// file).
+// file, and replaces only a regular file).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -105,6 +106,94 @@ TEST(AtomicFile, AKillDuringTheWriteLeavesThePreviousFile) {
   ::waitpid(child, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the write finished before the kill: make it larger";
   EXPECT_EQ(test::readText(target), "previous");
+}
+
+// The names in a folder, dot files (temporary files, locks) included.
+std::vector<std::string> namesIn(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(AtomicFile, RefusesAFifoAndLeavesIt) {
+  ScratchDir dir;
+  const auto fifo = dir.path() / "mesh.ply";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expectError([&] { writeFileAtomically(fifo, "mesh"); },
+              {"mesh.ply: is a FIFO (named pipe): expected a regular file or a new path"});
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  EXPECT_EQ(namesIn(dir.path()), std::vector<std::string>{"mesh.ply"});  // no temporary file
+}
+
+TEST(AtomicFile, RefusesDevNullAndLeavesIt) {
+  struct stat before {};
+  ASSERT_EQ(::stat("/dev/null", &before), 0);
+  expectError([&] { writeFileAtomically("/dev/null", "mesh"); },
+              {"/dev/null: is a device: expected a regular file or a new path"});
+  expectError([&] { (void)outputFileTarget("/dev/null"); }, {"/dev/null: is a device"});
+  struct stat after {};
+  ASSERT_EQ(::stat("/dev/null", &after), 0);
+  EXPECT_TRUE(S_ISCHR(after.st_mode));
+  EXPECT_EQ(after.st_rdev, before.st_rdev);
+  EXPECT_EQ(after.st_ino, before.st_ino);
+  // Nor through a link to it.
+  ScratchDir dir;
+  std::filesystem::create_symlink("/dev/null", dir.path() / "out.ply");
+  expectError([&] { writeFileAtomically(dir.path() / "out.ply", "mesh"); },
+              {"out.ply: is a symbolic link to /dev/null, which is a device: expected a regular "
+               "file or a new path"});
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.path() / "out.ply"));
+}
+
+TEST(AtomicFile, RefusesAFolder) {
+  ScratchDir dir;
+  std::filesystem::create_directories(dir.path() / "mesh.ply");
+  expectError([&] { writeFileAtomically(dir.path() / "mesh.ply", "mesh"); },
+              {"mesh.ply: is a directory: expected a regular file or a new path"});
+}
+
+// A symbolic link is written through: the link stays, the file it leads to gets the content,
+// replaced by a temporary file beside it (in its own folder, here another one).
+TEST(AtomicFile, WritesThroughASymbolicLink) {
+  ScratchDir dir;
+  std::filesystem::create_directories(dir.path() / "runs");
+  std::filesystem::create_directories(dir.path() / "latest");
+  const auto file = dir.path() / "runs/mesh.ply";
+  test::writeText(file, "old");
+  const auto link = dir.path() / "latest/mesh.ply";
+  std::filesystem::create_symlink("../runs/mesh.ply", link);
+  const auto chained = dir.path() / "mesh.ply";  // a link to the link
+  std::filesystem::create_symlink("latest/mesh.ply", chained);
+  EXPECT_EQ(outputFileTarget(link), dir.path() / "latest/../runs/mesh.ply");
+
+  writeFileAtomically(link, "new");
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(std::filesystem::read_symlink(link), "../runs/mesh.ply");
+  EXPECT_EQ(test::readText(file), "new");
+  writeFileAtomically(chained, "newer");
+  EXPECT_TRUE(std::filesystem::is_symlink(chained));
+  EXPECT_EQ(test::readText(file), "newer");
+  EXPECT_EQ(namesIn(dir.path() / "runs"), std::vector<std::string>{"mesh.ply"});
+  EXPECT_EQ(namesIn(dir.path() / "latest"), std::vector<std::string>{"mesh.ply"});
+}
+
+TEST(AtomicFile, RefusesADanglingLinkAndALoop) {
+  ScratchDir dir;
+  const auto dangling = dir.path() / "mesh.ply";
+  std::filesystem::create_symlink("missing/mesh.ply", dangling);
+  expectError([&] { writeFileAtomically(dangling, "mesh"); },
+              {"mesh.ply: is a symbolic link to",
+               "missing/mesh.ply, which is missing: expected a "
+               "regular file or a new path"});
+  EXPECT_TRUE(std::filesystem::is_symlink(dangling));
+  EXPECT_EQ(namesIn(dir.path()), std::vector<std::string>{"mesh.ply"});
+  std::filesystem::create_symlink("b", dir.path() / "a");
+  std::filesystem::create_symlink("a", dir.path() / "b");
+  expectError([&] { writeFileAtomically(dir.path() / "a", "mesh"); },
+              {"a: is a symbolic link to", "which is a loop of symbolic links"});
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "mesh.obj/inside");
              return "export " + writeReconstruction(ws) + " --out mesh.obj";
            },
-       .message = {"mesh.obj: cannot replace the file: Is a directory"},
+       .message = {"mesh.obj: is a directory: expected a regular file or a new path"},
        .intact = {"mesh.obj/inside"}},
       {.name = "ExportFromAFolderWhoseRunFailed",
        .prepare =
@@ -117,7 +117,7 @@ std::vector<CatalogueCase> outputCases() {
              std::filesystem::create_directories(ws / "polar.png");
              return std::string("frame mission --index 0 --polar polar.png");
            },
-       .message = {"polar.png: cannot replace the file"}},
+       .message = {"polar.png: is a directory: expected a regular file or a new path"}},
       {.name = "ReconstructIntoAFolderInUse",
        .prepare =
            [](const Workspace& ws) {
@@ -143,14 +143,14 @@ std::vector<CatalogueCase> outputCases() {
              std::filesystem::create_directories(ws / "points.ply");
              return "export " + writeReconstruction(ws) + " --points --out points.ply";
            },
-       .message = {"points.ply: cannot replace the file: Is a directory"}},
+       .message = {"points.ply: is a directory: expected a regular file or a new path"}},
       {.name = "NoiseModelOntoAFolder",
        .prepare =
            [](const Workspace& ws) {
              std::filesystem::create_directories(ws / "noise.yaml");
              return std::string("noise-model mission --out noise.yaml");
            },
-       .message = {"noise.yaml: cannot replace the file: Is a directory"}},
+       .message = {"noise.yaml: is a directory: expected a regular file or a new path"}},
       {.name = "ImportIntoAFile",
        .prepare =
            [](const Workspace& ws) {
