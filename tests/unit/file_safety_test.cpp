@@ -1,8 +1,10 @@
 // The file primitives every reader and writer goes through: io/files/input_file.h (only regular
-// files are read) and io/files/atomic_file.h (a write either completes or leaves the previous
-// file, and replaces only a regular file).
+// files are read), io/files/atomic_file.h (a write either completes or leaves the previous
+// file, and replaces only a regular file) and io/files/output_folder.h (output folders, and
+// the lock that keeps two runs out of one).
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -15,6 +17,7 @@
 #include "common/error.h"
 #include "io/files/atomic_file.h"
 #include "io/files/input_file.h"
+#include "io/files/output_folder.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {
@@ -194,6 +197,89 @@ TEST(AtomicFile, RefusesADanglingLinkAndALoop) {
   std::filesystem::create_symlink("a", dir.path() / "b");
   expectError([&] { writeFileAtomically(dir.path() / "a", "mesh"); },
               {"a: is a symbolic link to", "which is a loop of symbolic links"});
+}
+
+TEST(OutputFolder, RefusesWhatIsNotAFolder) {
+  ScratchDir dir;
+  const auto fifo = dir.path() / "sim";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expectError([&] { prepareOutputFolder(fifo); },
+              {"sim: is a FIFO (named pipe): expected a folder or a new path"});
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  test::writeText(dir.path() / "file", "kept");
+  expectError([&] { requireOutputFolder(dir.path() / "file"); },
+              {"file: is a regular file: expected a folder or a new path"});
+  expectError([&] { requireOutputFolder("/dev/null"); },
+              {"/dev/null: is a device: expected a folder or a new path"});
+  std::filesystem::create_symlink("nowhere", dir.path() / "link");
+  expectError([&] { requireOutputFolder(dir.path() / "link"); },
+              {"link: is a symbolic link that leads nowhere"});
+  requireOutputFolder(dir.path() / "new");  // a new path: nothing made yet
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "new"));
+  std::filesystem::create_symlink(dir.path(), dir.path() / "here");
+  requireOutputFolder(dir.path() / "here");
+}
+
+TEST(OutputFolder, HoldingOneFileRefusesAFifoOrAMissingFolderFirst) {
+  ScratchDir dir;
+  expectError([&] { (void)holdOutputFile("/dev/null"); }, {"/dev/null: is a device"});
+  expectError([&] { (void)holdOutputFile(dir.path() / "missing/noise.yaml"); },
+              {"noise.yaml: cannot create a file in", "missing: No such file or directory"});
+  EXPECT_NE(holdOutputFile(dir.path() / "noise.yaml"), nullptr);
+}
+
+TEST(OutputFolderLock, ASecondHoldFailsNamingTheHolderAndNoFileIsLeft) {
+  ScratchDir dir;
+  const auto out = dir.path() / "out";
+  prepareOutputFolder(out);
+  const std::string holder = "(pid " + std::to_string(::getpid()) + ")";
+  {
+    const OutputFolderLock first(out);
+    EXPECT_TRUE(first.held());
+    expectError([&] { OutputFolderLock second(out); },
+                {"out: is being written by another sonarcarve run " + holder});
+    expectError([&] { OutputFolderLock reader(out, FolderUse::Shared); },
+                {"is being written by another sonarcarve run"});
+  }
+  {
+    // Commands writing one file each share it, and keep a run out meanwhile.
+    const OutputFolderLock a(out, FolderUse::Shared);
+    const OutputFolderLock b(out, FolderUse::Shared);
+    expectError([&] { OutputFolderLock run(out); }, {"is being written by another sonarcarve run"});
+  }
+  // Released on an error as on a normal end (the object dies with the scope).
+  EXPECT_THROW(
+      {
+        const OutputFolderLock failing(out);
+        throw Error("out", "", "the run fails");
+      },
+      Error);
+  const OutputFolderLock again(out);
+  EXPECT_TRUE(namesIn(out).empty());  // the lock leaves no file behind
+}
+
+TEST(OutputFolderLock, IsReleasedWhenItsProcessIsKilled) {
+  ScratchDir dir;
+  const auto out = dir.path() / "out";
+  prepareOutputFolder(out);
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const OutputFolderLock held(out);
+    (void)!::write(ready[1], "x", 1);
+    ::pause();
+    ::_exit(0);
+  }
+  char byte = 0;
+  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+  expectError([&] { OutputFolderLock second(out); }, {"(pid " + std::to_string(child) + ")"});
+  ::kill(child, SIGKILL);
+  ::waitpid(child, nullptr, 0);
+  ::close(ready[0]);
+  ::close(ready[1]);
+  const OutputFolderLock after(out);
+  EXPECT_TRUE(after.held());
 }
 
 }  // namespace

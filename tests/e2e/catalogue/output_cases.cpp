@@ -53,7 +53,7 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "out");
              return std::string("reconstruct mission --out out");
            },
-       .message = {"out: cannot create the output folder", "expected a folder"},
+       .message = {"out: is a regular file: expected a folder or a new path"},
        .intact = {"out"}},
       {.name = "ReconstructOutUnderAFile",
        .prepare =
@@ -73,7 +73,7 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "sim");
              return std::string("simulate --scene riser --max-frames 1 --out sim");
            },
-       .message = {"sim", "cannot create the output folder"},
+       .message = {"sim: is a regular file: expected a folder or a new path"},
        .intact = {"sim"}},
       {.name = "ExportOutIsAFolder",
        .prepare =
@@ -124,9 +124,9 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "out/report.json");
              return std::string("reconstruct mission --out out");
            },
-       .message = {"out: another run is writing in this output folder"},
+       .message = {"out: is being written by another sonarcarve run (pid "},
        .intact = {"out/report.json"},
-       .wrapper = "flock -o out/.sonarcarve-lock"},
+       .wrapper = "flock -o out"},
       {.name = "ReconstructRemovesTheMeshOfAnEarlierRun",
        .prepare =
            [](const Workspace& ws) {
@@ -159,7 +159,7 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "imported");
              return std::string("import --format oculus ping.raw --nav nav.csv --out imported");
            },
-       .message = {"imported: is a file: expected a new or empty folder"},
+       .message = {"imported: is a regular file: expected a folder or a new path"},
        .intact = {"imported"}},
       {.name = "SimulateIntoAFolderThatCannotBeWritten",
        .prepare =
