@@ -4,7 +4,6 @@
 // the lock that keeps two runs out of one).
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/file.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>

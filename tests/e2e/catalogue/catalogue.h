@@ -47,6 +47,8 @@ struct CatalogueCase {
   std::string wrapper = "";
   /// Files under the workspace that must exist and hold a fragment: (path, fragment).
   std::vector<std::pair<std::string, std::string>> holds = {};
+  /// FIFOs prepare() made that must still be FIFOs: not replaced by a file.
+  std::vector<std::string> fifos = {};
 };
 
 /// GoogleTest prints a failing case's parameter: its name, not its bytes.

@@ -127,6 +127,96 @@ std::vector<CatalogueCase> outputCases() {
        .message = {"out: is being written by another sonarcarve run (pid "},
        .intact = {"out/report.json"},
        .wrapper = "flock -o out"},
+      // Targets that are not a regular file or a new path (issue 44): a FIFO, a device or a
+      // dangling link is refused before any work and left as it was; a link is written through.
+      {.name = "ExportOntoAFifo",
+       .prepare =
+           [](const Workspace& ws) {
+             makeFifo(ws / "mesh.ply");
+             return "export " + writeReconstruction(ws) + " --out mesh.ply";
+           },
+       .message = {"mesh.ply: is a FIFO (named pipe): expected a regular file or a new path"},
+       .fifos = {"mesh.ply"}},
+      {.name = "ExportOntoDevNull",
+       .prepare =
+           [](const Workspace& ws) {
+             return "export " + writeReconstruction(ws) + " --points --out /dev/null";
+           },
+       .message = {"/dev/null: is a device: expected a regular file or a new path"}},
+      {.name = "ExportThroughALink",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "runs/points.ply");
+             std::filesystem::create_symlink("runs/points.ply", ws / "points.ply");
+             return "export " + writeReconstruction(ws) + " --points --out points.ply";
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"wrote points.ply"},
+       .holds = {{"runs/points.ply", "ply"}}},
+      {.name = "ExportOntoADanglingLink",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_symlink("missing.ply", ws / "points.ply");
+             return "export " + writeReconstruction(ws) + " --points --out points.ply";
+           },
+       .message = {"points.ply: is a symbolic link to missing.ply, which is missing"},
+       .absent = {"missing.ply"}},
+      {.name = "NoiseModelOntoAFifo",
+       .prepare =
+           [](const Workspace& ws) {
+             makeFifo(ws / "noise.yaml");
+             return std::string("noise-model mission --out noise.yaml");
+           },
+       .message = {"noise.yaml: is a FIFO (named pipe): expected a regular file or a new path"},
+       .fifos = {"noise.yaml"}},
+      {.name = "SimulateIntoAFifo",
+       .prepare =
+           [](const Workspace& ws) {
+             makeFifo(ws / "sim");
+             return std::string("simulate --scene riser --max-frames 1 --out sim");
+           },
+       .message = {"sim: is a FIFO (named pipe): expected a folder or a new path"},
+       .fifos = {"sim"}},
+      {.name = "ImportIntoAFifo",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+             makeFifo(ws / "imported");
+             return std::string("import --format oculus ping.raw --out imported");
+           },
+       .message = {"imported: is a FIFO (named pipe): expected a folder or a new path"},
+       .fifos = {"imported"}},
+      // A folder another run holds (flock on the folder, as sonarcarve's own lock): the second
+      // run fails at once and changes nothing in it.
+      {.name = "SimulateIntoAFolderInUse",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "sim/mission.yaml");
+             return std::string("simulate --scene riser --max-frames 1 --force --out sim");
+           },
+       .message = {"sim: is being written by another sonarcarve run (pid "},
+       .absent = {"sim/nav.csv", "sim/frames"},
+       .intact = {"sim/mission.yaml"},
+       .wrapper = "flock -o sim"},
+      {.name = "ImportIntoAFolderInUse",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+             std::filesystem::create_directories(ws / "imported");
+             return std::string("import --format oculus ping.raw --out imported");
+           },
+       .message = {"imported: is being written by another sonarcarve run (pid "},
+       .absent = {"imported/frames", "imported/mission.yaml"},
+       .wrapper = "flock -o imported"},
+      {.name = "ExportIntoAFolderInUse",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "out");
+             return "export " + writeReconstruction(ws) + " --points --out out/points.ply";
+           },
+       .message = {"out: is being written by another sonarcarve run (pid "},
+       .absent = {"out/points.ply"},
+       .wrapper = "flock -o out"},
       {.name = "ReconstructRemovesTheMeshOfAnEarlierRun",
        .prepare =
            [](const Workspace& ws) {
