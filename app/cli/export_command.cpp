@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "common/error.h"
+#include "io/files/output_folder.h"
 #include "io/mesh/point_cloud_ply.h"
 #include "io/run/run_manifest.h"
 #include "mesh/mesh_export.h"
@@ -39,6 +40,8 @@ void addExportCommand(CLI::App& app, int& exit_code) {
                 "World coordinates: add back the mission origin the reconstruction is local to "
                 "(its PLY comment origin_ned_m), in double (PLY double, OBJ 6 decimals; not STL)");
   cmd->callback([o, &exit_code] {
+    // The target is checked, and its folder held, before anything is read.
+    const auto hold = holdOutputFile(o->out);
     ExportOptions options;
     options.format = o->format.empty() ? formatOfPath(o->out) : o->format;
     options.frame = o->frame;

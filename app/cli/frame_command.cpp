@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "denoise/detector.h"
 #include "io/files/atomic_file.h"
+#include "io/files/output_folder.h"
 #include "io/files/png_codec.h"
 #include "io/mission/mission.h"
 #include "sonar/fan_image.h"
@@ -55,6 +56,12 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--low", o->low, "Intensity shown black (default: 1st percentile)");
   cmd->add_option("--high", o->high, "Intensity shown white (default: 99.5th percentile)");
   cmd->callback([o, source, &exit_code] {
+    std::vector<std::unique_ptr<OutputFolderLock>> holds;  // the pictures' targets, checked first
+    for (const std::string* picture : {&o->polar, &o->fan, &o->detected}) {
+      if (!picture->empty()) {
+        holds.push_back(holdOutputFile(*picture));
+      }
+    }
     const Mission mission = openMission(o->mission, openOptionsFrom(*source));
     if (o->index >= mission.frames.size()) {
       throw Error(o->mission, "frame " + std::to_string(o->index),

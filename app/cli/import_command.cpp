@@ -7,6 +7,7 @@
 #include "cli/source_flags.h"
 #include "cli/terminal_progress.h"
 #include "common/error.h"
+#include "io/files/output_folder.h"
 #include "io/import.h"
 
 namespace sonarcarve::cli {
@@ -22,6 +23,7 @@ int runImport(const Options& o) {
   if (o.format != "auto" && o.format != "oculus") {
     throw Error("--format", "", "unknown format '" + o.format + "': expected auto or oculus");
   }
+  requireOutputFolder(o.out);  // before the log is read
   const OpenOptions open = openOptionsFrom(o.source);
   // Oculus logs through their importer, which also explains what is wrong with a file that no
   // reader recognises.

@@ -8,6 +8,7 @@
 
 #include "carve/map_file.h"
 #include "cli/commands.h"
+#include "io/files/output_folder.h"
 
 namespace sonarcarve::cli {
 namespace {
@@ -19,6 +20,7 @@ struct MergeOptions {
 
 // Errors (a broken map names its byte; maps of other grids) reach main, which prints them.
 int runMerge(const MergeOptions& o) {
+  const auto hold = holdOutputFile(o.out);  // a FIFO or a device as --out fails now
   std::unique_ptr<VoxelMap> merged = loadMap(o.inputs.front());
   for (std::size_t i = 1; i < o.inputs.size(); ++i) {
     const std::unique_ptr<VoxelMap> next = loadMap(o.inputs[i]);

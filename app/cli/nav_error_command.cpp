@@ -8,6 +8,7 @@
 #include "cli/nav_error_flags.h"
 #include "common/error.h"
 #include "io/files/atomic_file.h"
+#include "io/files/output_folder.h"
 #include "io/mission/mission.h"
 #include "io/mission/nav_csv.h"
 #include "sim/trajectory.h"
@@ -70,6 +71,7 @@ void addNavErrorCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--seed", o->spec.seed, "Seed of the errors")->capture_default_str();
   addNavErrorFlags(*cmd, o->spec);
   cmd->callback([o, &exit_code] {
+    const auto hold = holdOutputFile(o->out);
     const Mission mission = readMission(o->mission);
     const NavTrack recorded(withNavigationError(mission.nav.samples(), o->spec));
     writeFileAtomically(o->out, navCsvText(recorded));

@@ -10,6 +10,7 @@
 #include "denoise/detector.h"
 #include "denoise/mission_noise_model.h"
 #include "denoise/noise_model.h"
+#include "io/files/output_folder.h"
 #include "io/mission/mission.h"
 
 namespace sonarcarve::cli {
@@ -34,6 +35,8 @@ void addNoiseModelCommand(CLI::App& app, int& exit_code) {
                 "Learn from a mission with structure, as reconstruct does without a noise model "
                 "(returns from structure left out; docs/denoising.md)");
   cmd->callback([o, &exit_code] {
+    // The target is checked, and its folder held, before the frames are learned from.
+    const auto hold = holdOutputFile(o->out);
     const Mission mission = readMission(o->mission);
     TerminalProgress progress;
     std::vector<FrameProblem> skipped;

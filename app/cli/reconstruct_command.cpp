@@ -45,6 +45,7 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
 
 int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
                    const std::vector<std::string>& arguments) {
+  requireOutputFolder(o.out);  // before the mission is read
   const Mission mission = openMission(o.mission, openOptionsFrom(o.source));
   for (const std::string& warning : mission.warnings) {
     std::cerr << "warning: " << warning << "\n";

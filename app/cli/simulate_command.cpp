@@ -96,6 +96,7 @@ SonarModel simulatedSonar(const SimulateOptions& o) {
 
 int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   const std::filesystem::path out(o.out);
+  requireOutputFolder(out);
   requireBoundedRays(o, paperSonar());
   if (std::filesystem::exists(out / "mission.yaml") && !o.force) {
     throw Error(out.string(), "", "already holds a mission; choose another --out or add --force");
@@ -139,6 +140,8 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
       o.max_frames >= 0 ? std::optional<int>(o.max_frames) : std::nullopt,
       out};
   prepareOutputFolder(out);
+  // Two runs into one folder would mix their frames, navigation and ground truth.
+  const OutputFolderLock lock(out);
 
   TerminalProgress progress;
   const SimulationResult result = runSimulation(

@@ -9,6 +9,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "io/files/output_folder.h"
 #include "io/files/yaml_fields.h"
 #include "io/mission/mission_writer.h"
 #include "io/mission/sonar_yaml.h"
@@ -152,11 +153,11 @@ void writeMissionFolder(const ImportRequest& request, const SonarModel& sonar,
                         const Mounting& mounting, const NavTrack& nav, const std::string& crs,
                         std::size_t count, const std::function<Frame(std::size_t)>& frame_at,
                         Progress& progress, ImportReport& report) {
+  prepareOutputFolder(request.out);
+  // Held before it is found empty: a second import into it fails instead of mixing its frames.
+  const OutputFolderLock lock(request.out);
   std::error_code ec;
-  if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_directory(request.out, ec)) {
-    throw Error(request.out.string(), "", "is a file: expected a new or empty folder");
-  }
-  if (std::filesystem::exists(request.out, ec) && !std::filesystem::is_empty(request.out, ec)) {
+  if (!std::filesystem::is_empty(request.out, ec)) {
     throw Error(request.out.string(), "",
                 "output folder exists and is not empty: choose a new folder");
   }

@@ -1,10 +1,16 @@
 // End-to-end: sonarcarve-cli simulate and frame, as a user runs them.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -50,6 +56,63 @@ TEST(CliSimulate, WritesARiserMissionThatInfoReads) {
   EXPECT_NE(again.exit_code, 0);
   EXPECT_NE(again.output.find("already holds a mission"), std::string::npos) << again.output;
   EXPECT_EQ(readMission(out).frames.size(), 3u);
+}
+
+// Every file under `folder` with its content, by relative path.
+std::map<std::string, std::string> contentsOf(const std::filesystem::path& folder) {
+  std::map<std::string, std::string> contents;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+    const std::string name = std::filesystem::relative(entry.path(), folder).string();
+    contents[name] = entry.is_regular_file() ? test::readText(entry.path()) : "(folder)";
+  }
+  return contents;
+}
+
+// Two runs into one folder used to both exit 0 and leave navigation, ground truth and frames
+// of different runs mixed: a run holds its folder (a flock on it), and a second fails at once.
+TEST(CliSimulate, ASecondRunIntoAFolderInUseFailsAndLeavesItAsItWas) {
+  test::ScratchDir dir;
+  const auto out = dir.path() / "riser";
+  ASSERT_EQ(runCli("simulate --scene riser --max-frames 2 --seed 4 --out " + quoted(out)).exit_code,
+            0);
+  const auto before = contentsOf(out);
+  {
+    // Held as a running sonarcarve holds it.
+    const int held = ::open(out.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    ASSERT_GE(held, 0);
+    ASSERT_EQ(::flock(held, LOCK_EX | LOCK_NB), 0);
+    const auto second =
+        runCli("simulate --scene riser --max-frames 1 --seed 9 --force --out " + quoted(out));
+    ::close(held);
+    EXPECT_EQ(second.exit_code, 1) << second.output;
+    EXPECT_NE(
+        second.output.find(out.string() + ": is being written by another sonarcarve run (pid " +
+                           std::to_string(::getpid()) + ")"),
+        std::string::npos)
+        << second.output;
+    EXPECT_EQ(contentsOf(out), before);
+  }
+  // Released: the run goes ahead, and the lock has left no file in the folder.
+  const auto third =
+      runCli("simulate --scene riser --max-frames 1 --seed 9 --force --out " + quoted(out));
+  ASSERT_EQ(third.exit_code, 0) << third.output;
+  EXPECT_EQ(readMission(out).frames.size(), 1u);
+  for (const auto& [name, content] : contentsOf(out)) {
+    EXPECT_TRUE(before.count(name)) << name << " was not there after the first run";
+  }
+}
+
+// A FIFO or a device as --out is refused before any work, and left as it was.
+TEST(CliSimulate, AnOutThatIsNotAFolderIsRefused) {
+  test::ScratchDir dir;
+  const auto fifo = dir.path() / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto r = runCli("simulate --scene riser --max-frames 1 --out " + quoted(fifo));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("fifo: is a FIFO (named pipe): expected a folder or a new path"),
+            std::string::npos)
+      << r.output;
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
 }
 
 TEST(CliSimulate, ClippedBeamIsRecordedInTheSettings) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "io/files/file_kind.h"
 
 namespace sonarcarve {
 namespace {
@@ -60,12 +61,12 @@ int writeAndSync(int fd, std::string_view bytes, std::size_t& written) {
   return ::fsync(fd) == 0 ? 0 : errno;
 }
 
-void writeTemporary(const std::filesystem::path& path, const std::filesystem::path& tmp,
-                    std::string_view bytes) {
+void writeTemporary(const std::filesystem::path& path, const std::filesystem::path& folder,
+                    const std::filesystem::path& tmp, std::string_view bytes) {
   WriteDescriptor fd(tmp);
   if (fd.get() < 0) {
     throw Error(path.string(), "",
-                "cannot create a file in " + path.parent_path().string() + ": " + cause(errno));
+                "cannot create a file in " + folder.string() + ": " + cause(errno));
   }
   std::size_t written = 0;
   int error = writeAndSync(fd.get(), bytes, written);
@@ -82,22 +83,68 @@ void writeTemporary(const std::filesystem::path& path, const std::filesystem::pa
   }
 }
 
+constexpr int kMaxLinks = 40;  // as the kernel's own limit (ELOOP)
+
+// `target` is where `links` symbolic links from `path` led.
+[[noreturn]] void refuseTarget(const std::filesystem::path& path, int links,
+                               const std::filesystem::path& target, const std::string& what) {
+  const std::string through =
+      links == 0 ? "is " : "is a symbolic link to " + target.string() + ", which is ";
+  throw Error(path.string(), "", through + what + ": expected a regular file or a new path");
+}
+
+std::filesystem::path linkTarget(const std::filesystem::path& link) {
+  std::error_code ec;
+  const std::filesystem::path to = std::filesystem::read_symlink(link, ec);
+  if (ec) {
+    throw Error(link.string(), "", "cannot read the symbolic link: " + ec.message());
+  }
+  return to.is_absolute() ? to : link.parent_path() / to;
+}
+
 }  // namespace
 
+std::filesystem::path outputFileTarget(const std::filesystem::path& path) {
+  std::filesystem::path target = path;
+  for (int links = 0;; ++links) {
+    struct stat st {};
+    if (::lstat(target.c_str(), &st) != 0) {
+      if (links == 0) {
+        // A new path; a missing or unwritable folder is reported by the write itself.
+        return path;
+      }
+      refuseTarget(path, links, target, errno == ENOENT ? "missing" : std::strerror(errno));
+    }
+    if (S_ISREG(st.st_mode)) {
+      return target;
+    }
+    if (!S_ISLNK(st.st_mode)) {
+      refuseTarget(path, links, target, fileKindName(st.st_mode));
+    }
+    if (links == kMaxLinks) {
+      refuseTarget(path, links, target, "a loop of symbolic links");
+    }
+    target = linkTarget(target);
+  }
+}
+
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
-  std::filesystem::path folder = path.parent_path();
+  // Through a symbolic link the file it leads to is replaced, by a temporary file beside it
+  // (the same file system, so the rename is atomic); messages name the path as given.
+  const std::filesystem::path target = outputFileTarget(path);
+  std::filesystem::path folder = target.parent_path();
   if (folder.empty()) {
     folder = ".";
   }
   const std::filesystem::path tmp =
-      folder / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
+      folder / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
   try {
-    writeTemporary(path, tmp, bytes);
+    writeTemporary(path, folder, tmp, bytes);
   } catch (...) {
     ::unlink(tmp.c_str());
     throw;
   }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (::rename(tmp.c_str(), target.c_str()) != 0) {
     const int error = errno;
     ::unlink(tmp.c_str());
     throw Error(path.string(), "", "cannot replace the file: " + cause(error));

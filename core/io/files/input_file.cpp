@@ -7,30 +7,14 @@
 #include <cstring>
 
 #include "common/error.h"
+#include "io/files/file_kind.h"
 
 namespace sonarcarve {
 namespace {
 
-// What a non-regular file is, for the message.
-std::string kindOf(mode_t mode) {
-  if (S_ISDIR(mode)) {
-    return "a directory";
-  }
-  if (S_ISFIFO(mode)) {
-    return "a FIFO (named pipe)";
-  }
-  if (S_ISCHR(mode) || S_ISBLK(mode)) {
-    return "a device";
-  }
-  if (S_ISSOCK(mode)) {
-    return "a socket";
-  }
-  return "not a regular file";
-}
-
 [[noreturn]] void refuse(const std::filesystem::path& path, mode_t mode, std::string_view what) {
   throw Error(path.string(), "",
-              "is " + kindOf(mode) + ": expected a regular file (" + std::string(what) + ")");
+              "is " + fileKindName(mode) + ": expected a regular file (" + std::string(what) + ")");
 }
 
 }  // namespace

@@ -2,17 +2,62 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <system_error>
 
 #include "common/error.h"
+#include "io/files/atomic_file.h"
+#include "io/files/file_kind.h"
 
 namespace sonarcarve {
+namespace {
+
+// The process holding a lock on the file `st` describes, from /proc/locks (Linux): lines such
+// as "1: FLOCK  ADVISORY  WRITE 1234 fe:00:5678 0 EOF" (device in hex, inode in decimal).
+std::optional<long> lockHolder(const struct stat& st) {
+  char inode[64];
+  std::snprintf(inode, sizeof inode, "%02x:%02x:%lu", major(st.st_dev), minor(st.st_dev),
+                static_cast<unsigned long>(st.st_ino));
+  std::ifstream locks("/proc/locks");
+  std::string line;
+  while (std::getline(locks, line)) {
+    std::istringstream fields(line);
+    std::string id, type, advisory, mode, file;
+    long pid = 0;
+    if (fields >> id >> type >> advisory >> mode >> pid >> file && type != "->" && file == inode) {
+      return pid;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void requireOutputFolder(const std::filesystem::path& folder) {
+  struct stat st {};
+  if (::stat(folder.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode)) {
+      throw Error(folder.string(), "",
+                  "is " + fileKindName(st.st_mode) + ": expected a folder or a new path");
+    }
+  } else if (errno == ENOENT && ::lstat(folder.c_str(), &st) == 0) {
+    throw Error(folder.string(), "",
+                "is a symbolic link that leads nowhere: expected a folder or a new path");
+  }
+  // Anything else (a missing permission, a file among the parents) is for the creation to say.
+}
 
 void prepareOutputFolder(const std::filesystem::path& folder) {
+  requireOutputFolder(folder);
   const std::string name = folder.string();
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
@@ -34,23 +79,55 @@ void prepareOutputFolder(const std::filesystem::path& folder) {
   ::unlink(probe.c_str());
 }
 
-OutputFolderLock::OutputFolderLock(const std::filesystem::path& folder) {
-  const std::filesystem::path file = folder / ".sonarcarve-lock";
-  fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+OutputFolderLock::OutputFolderLock(const std::filesystem::path& folder, FolderUse use) {
+  const std::filesystem::path path = folder.empty() ? "." : folder;
+  // A lock on the folder itself: no file is left in it to list, compare or remove.
+  fd_ = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd_ < 0) {
-    throw Error(folder.string(), "",
+    throw Error(path.string(), "",
                 std::string("cannot lock the output folder: ") + std::strerror(errno));
   }
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    ::close(fd_);
-    throw Error(folder.string(), "",
-                "another run is writing in this output folder: wait for it to end or choose "
-                "another one");
+  const int operation = (use == FolderUse::Exclusive ? LOCK_EX : LOCK_SH) | LOCK_NB;
+  int result = 0;
+  do {
+    result = ::flock(fd_, operation);
+  } while (result != 0 && errno == EINTR);
+  if (result == 0) {
+    return;
   }
+  const int error = errno;
+  struct stat st {};
+  const bool known = ::fstat(fd_, &st) == 0;
+  ::close(fd_);
+  fd_ = -1;
+  if (error != EWOULDBLOCK) {
+    return;  // a file system without flock: no hold, as held() says
+  }
+  const std::optional<long> pid = known ? lockHolder(st) : std::nullopt;
+  throw Error(path.string(), "",
+              "is being written by another sonarcarve run" +
+                  (pid ? " (pid " + std::to_string(*pid) + ")" : std::string()) +
+                  ": wait for it to end or choose another folder");
 }
 
 OutputFolderLock::~OutputFolderLock() {
-  ::close(fd_);  // releases the lock
+  if (fd_ >= 0) {
+    ::close(fd_);  // releases the lock
+  }
+}
+
+std::unique_ptr<OutputFolderLock> holdOutputFile(const std::filesystem::path& file) {
+  const std::filesystem::path target = outputFileTarget(file);
+  const std::filesystem::path folder =
+      target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) {
+    // As the writer would say it, at the end of the work.
+    throw Error(file.string(), "",
+                "cannot create a file in " + folder.string() + ": " +
+                    std::make_error_code(std::errc::no_such_file_or_directory).message());
+  }
+  return std::make_unique<OutputFolderLock>(folder, FolderUse::Shared);
 }
 
 }  // namespace sonarcarve

@@ -183,8 +183,11 @@ void sqlite(sqlite3* db, const char* sql, const std::filesystem::path& out) {
 
 void writeDb3(const std::filesystem::path& out, const std::vector<BagTopicSpec>& topics,
               const std::vector<BagMessageSpec>& messages) {
+  // As writeFileAtomically: onto a regular file or a new path, through a symbolic link.
+  const std::filesystem::path target = outputFileTarget(out);
   const std::filesystem::path temporary =
-      out.parent_path() / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
+      target.parent_path() /
+      ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
   std::filesystem::remove(temporary);
   sqlite3* db = nullptr;
   sqlite3_stmt* insert = nullptr;
@@ -223,7 +226,7 @@ void writeDb3(const std::filesystem::path& out, const std::vector<BagTopicSpec>&
       throw Error(out.string(), "", "SQLite: cannot close the file");
     }
     db = nullptr;
-    std::filesystem::rename(temporary, out);
+    std::filesystem::rename(temporary, target);
   } catch (...) {
     sqlite3_finalize(insert);
     sqlite3_close(db);

@@ -80,6 +80,11 @@ void runCatalogueCase(const CatalogueCase& c) {
           << "'" << fragment << "' not in " << relative << " after " << context;
     }
   }
+  for (const std::string& relative : c.fifos) {
+    std::error_code ec;
+    EXPECT_TRUE(std::filesystem::is_fifo(std::filesystem::symlink_status(ws / relative, ec)))
+        << relative << " replaced by " << context;
+  }
   EXPECT_EQ(temporaryFilesUnder(ws.root()), std::vector<std::string>{}) << context;
   rusage usage{};
   getrusage(RUSAGE_CHILDREN, &usage);

@@ -43,10 +43,12 @@ struct CatalogueCase {
   std::vector<std::string> intact = {};
   /// Largest file the command may write, KiB (a full disk); 0 = no limit.
   int file_size_limit_kib = 0;
-  /// A command run around sonarcarve-cli, in the workspace: "flock -o out/.sonarcarve-lock".
+  /// A command run around sonarcarve-cli, in the workspace: "flock -o out" (holds out/ locked).
   std::string wrapper = "";
   /// Files under the workspace that must exist and hold a fragment: (path, fragment).
   std::vector<std::pair<std::string, std::string>> holds = {};
+  /// FIFOs prepare() made that must still be FIFOs: not replaced by a file.
+  std::vector<std::string> fifos = {};
 };
 
 /// GoogleTest prints a failing case's parameter: its name, not its bytes.

@@ -53,7 +53,7 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "out");
              return std::string("reconstruct mission --out out");
            },
-       .message = {"out: cannot create the output folder", "expected a folder"},
+       .message = {"out: is a regular file: expected a folder or a new path"},
        .intact = {"out"}},
       {.name = "ReconstructOutUnderAFile",
        .prepare =
@@ -73,7 +73,7 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "sim");
              return std::string("simulate --scene riser --max-frames 1 --out sim");
            },
-       .message = {"sim", "cannot create the output folder"},
+       .message = {"sim: is a regular file: expected a folder or a new path"},
        .intact = {"sim"}},
       {.name = "ExportOutIsAFolder",
        .prepare =
@@ -82,7 +82,7 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "mesh.obj/inside");
              return "export " + writeReconstruction(ws) + " --out mesh.obj";
            },
-       .message = {"mesh.obj: cannot replace the file: Is a directory"},
+       .message = {"mesh.obj: is a directory: expected a regular file or a new path"},
        .intact = {"mesh.obj/inside"}},
       {.name = "ExportFromAFolderWhoseRunFailed",
        .prepare =
@@ -117,16 +117,106 @@ std::vector<CatalogueCase> outputCases() {
              std::filesystem::create_directories(ws / "polar.png");
              return std::string("frame mission --index 0 --polar polar.png");
            },
-       .message = {"polar.png: cannot replace the file"}},
+       .message = {"polar.png: is a directory: expected a regular file or a new path"}},
       {.name = "ReconstructIntoAFolderInUse",
        .prepare =
            [](const Workspace& ws) {
              writePrevious(ws / "out/report.json");
              return std::string("reconstruct mission --out out");
            },
-       .message = {"out: another run is writing in this output folder"},
+       .message = {"out: is being written by another sonarcarve run (pid "},
        .intact = {"out/report.json"},
-       .wrapper = "flock -o out/.sonarcarve-lock"},
+       .wrapper = "flock -o out"},
+      // Targets that are not a regular file or a new path (issue 44): a FIFO, a device or a
+      // dangling link is refused before any work and left as it was; a link is written through.
+      {.name = "ExportOntoAFifo",
+       .prepare =
+           [](const Workspace& ws) {
+             makeFifo(ws / "mesh.ply");
+             return "export " + writeReconstruction(ws) + " --out mesh.ply";
+           },
+       .message = {"mesh.ply: is a FIFO (named pipe): expected a regular file or a new path"},
+       .fifos = {"mesh.ply"}},
+      {.name = "ExportOntoDevNull",
+       .prepare =
+           [](const Workspace& ws) {
+             return "export " + writeReconstruction(ws) + " --points --out /dev/null";
+           },
+       .message = {"/dev/null: is a device: expected a regular file or a new path"}},
+      {.name = "ExportThroughALink",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "runs/points.ply");
+             std::filesystem::create_symlink("runs/points.ply", ws / "points.ply");
+             return "export " + writeReconstruction(ws) + " --points --out points.ply";
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"wrote points.ply"},
+       .holds = {{"runs/points.ply", "ply"}}},
+      {.name = "ExportOntoADanglingLink",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_symlink("missing.ply", ws / "points.ply");
+             return "export " + writeReconstruction(ws) + " --points --out points.ply";
+           },
+       .message = {"points.ply: is a symbolic link to missing.ply, which is missing"},
+       .absent = {"missing.ply"}},
+      {.name = "NoiseModelOntoAFifo",
+       .prepare =
+           [](const Workspace& ws) {
+             makeFifo(ws / "noise.yaml");
+             return std::string("noise-model mission --out noise.yaml");
+           },
+       .message = {"noise.yaml: is a FIFO (named pipe): expected a regular file or a new path"},
+       .fifos = {"noise.yaml"}},
+      {.name = "SimulateIntoAFifo",
+       .prepare =
+           [](const Workspace& ws) {
+             makeFifo(ws / "sim");
+             return std::string("simulate --scene riser --max-frames 1 --out sim");
+           },
+       .message = {"sim: is a FIFO (named pipe): expected a folder or a new path"},
+       .fifos = {"sim"}},
+      {.name = "ImportIntoAFifo",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+             makeFifo(ws / "imported");
+             return std::string("import --format oculus ping.raw --out imported");
+           },
+       .message = {"imported: is a FIFO (named pipe): expected a folder or a new path"},
+       .fifos = {"imported"}},
+      // A folder another run holds (flock on the folder, as sonarcarve's own lock): the second
+      // run fails at once and changes nothing in it.
+      {.name = "SimulateIntoAFolderInUse",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "sim/mission.yaml");
+             return std::string("simulate --scene riser --max-frames 1 --force --out sim");
+           },
+       .message = {"sim: is being written by another sonarcarve run (pid "},
+       .absent = {"sim/nav.csv", "sim/frames"},
+       .intact = {"sim/mission.yaml"},
+       .wrapper = "flock -o sim"},
+      {.name = "ImportIntoAFolderInUse",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+             std::filesystem::create_directories(ws / "imported");
+             return std::string("import --format oculus ping.raw --out imported");
+           },
+       .message = {"imported: is being written by another sonarcarve run (pid "},
+       .absent = {"imported/frames", "imported/mission.yaml"},
+       .wrapper = "flock -o imported"},
+      {.name = "ExportIntoAFolderInUse",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "out");
+             return "export " + writeReconstruction(ws) + " --points --out out/points.ply";
+           },
+       .message = {"out: is being written by another sonarcarve run (pid "},
+       .absent = {"out/points.ply"},
+       .wrapper = "flock -o out"},
       {.name = "ReconstructRemovesTheMeshOfAnEarlierRun",
        .prepare =
            [](const Workspace& ws) {
@@ -143,14 +233,14 @@ std::vector<CatalogueCase> outputCases() {
              std::filesystem::create_directories(ws / "points.ply");
              return "export " + writeReconstruction(ws) + " --points --out points.ply";
            },
-       .message = {"points.ply: cannot replace the file: Is a directory"}},
+       .message = {"points.ply: is a directory: expected a regular file or a new path"}},
       {.name = "NoiseModelOntoAFolder",
        .prepare =
            [](const Workspace& ws) {
              std::filesystem::create_directories(ws / "noise.yaml");
              return std::string("noise-model mission --out noise.yaml");
            },
-       .message = {"noise.yaml: cannot replace the file: Is a directory"}},
+       .message = {"noise.yaml: is a directory: expected a regular file or a new path"}},
       {.name = "ImportIntoAFile",
        .prepare =
            [](const Workspace& ws) {
@@ -159,7 +249,7 @@ std::vector<CatalogueCase> outputCases() {
              writePrevious(ws / "imported");
              return std::string("import --format oculus ping.raw --nav nav.csv --out imported");
            },
-       .message = {"imported: is a file: expected a new or empty folder"},
+       .message = {"imported: is a regular file: expected a folder or a new path"},
        .intact = {"imported"}},
       {.name = "SimulateIntoAFolderThatCannotBeWritten",
        .prepare =
