@@ -19,8 +19,14 @@ class AdamState {
   /// [lo, hi].
   void step(std::vector<float>& x, const std::vector<double>& g,
             const std::vector<std::uint8_t>& in_band, double learning_rate, double lo, double hi);
+  /// The same for a small dense vector (every element moves).
+  void step(std::vector<double>& x, const std::vector<double>& g, double learning_rate, double lo,
+            double hi);
 
  private:
+  template <typename T>
+  void update(std::vector<T>& x, const std::vector<double>& g,
+              const std::vector<std::uint8_t>* in_band, double learning_rate, double lo, double hi);
   std::vector<float> m_, v_;
   int t_ = 0;
 };

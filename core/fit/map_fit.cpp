@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "fit/adam.h"
+#include "fit/beam_background_fit.h"
 #include "model/forward_model.h"
 #include "model/speckle_likelihood.h"
 
@@ -139,6 +140,13 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
   view.gain = predicted > 0.0 ? observed / predicted : 1.0;
   view.background = background;
   summary.gain = view.gain;
+  summary.declared_profile = view.profile;
+  const auto mean = [](const std::vector<double>& values) {
+    return std::accumulate(values.begin(), values.end(), 0.0) /
+           static_cast<double>(std::max<std::size_t>(1, values.size()));
+  };
+  summary.declared_background = mean(view.background);
+  BeamBackgroundFit view_fit(view, summary.background_floor, {params_.beam, params_.background});
 
   std::vector<float> log_reflectance(grid.voxelCount());
   for (std::size_t i = 0; i < log_reflectance.size(); ++i) {
@@ -204,7 +212,8 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
       some_beams.beam_stride = kStepBeamStride;
       some_beams.beam_offset = static_cast<int>(step % kStepBeamStride);
       const ForwardModel step_model(sonar_, some_beams, pool_);
-      for (std::size_t k = first; k < std::min(order.size(), first + per_step); ++k) {
+      const std::size_t last = std::min(order.size(), first + per_step);
+      for (std::size_t k = first; k < last; ++k) {
         look(step_model, frames[order[k]], during, &gradient);
       }
       const double share = 1.0 - (1.0 - kFinalLearningRateShare) * static_cast<double>(step) /
@@ -212,6 +221,8 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
       ++step;
       logit_steps.step(grid.logits(), gradient.logits, fit.in_band, kLogitLearningRate * share,
                        kMinLogit, kMaxLogit);
+      view_fit.step(view, gradient,
+                    static_cast<double>(last - first) * sonar_.rows() * sonar_.cols(), share);
       for (std::size_t i = 0; i < gradient.reflectance.size(); ++i) {
         gradient.reflectance[i] *= grid.reflectance()[i];  // d / d log(rho)
       }
@@ -230,6 +241,9 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
     look(model, frames[k], after, nullptr);
   }
   summary.after = finish(after);
+  summary.fitted_profile = view.profile;
+  summary.gain = view.gain;  // with the level the profile's shape gave it
+  summary.fitted_background = mean(view.background);
   return summary;
 }
 

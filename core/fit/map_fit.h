@@ -3,15 +3,17 @@
 // logit and reflectance so that the forward model (model/forward_model.h) predicts the
 // observed frames, by maximum likelihood under fully developed speckle (exponential intensity
 // about the predicted mean, model/speckle_likelihood.h). The sonar's gain is set once from
-// the frames' energy; the background per range bin is given (the noise model's mean), raised
-// to a floor so that every predicted mean is positive. Optimiser: Adam, one step every few
-// frames, the learning rate falling over the passes; reflectance is fitted as its logarithm,
-// so it stays positive.
+// the frames' energy; the background per range bin starts from the noise model's mean, raised
+// to a floor so that every predicted mean is positive; the elevation profile starts from the
+// declared beam; both are then fitted with the map (fit/beam_background_fit.h). Optimiser: Adam,
+// one step every few frames, the learning rate falling over the passes; reflectance is fitted as
+// its logarithm, so it stays positive.
 #pragma once
 
 #include <Eigen/Geometry>
 #include <functional>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "common/progress.h"
@@ -41,6 +43,12 @@ struct FitPassFigures {
 
 struct MapFitSummary {
   double gain = 1.0;
+  /// The elevation profile declared (the start) and fitted (the same when not fitted).
+  std::optional<ElevationProfile> declared_profile;
+  std::optional<ElevationProfile> fitted_profile;
+  /// Mean background per range bin at the start (the noise model's, floored) and fitted.
+  double declared_background = 0.0;
+  double fitted_background = 0.0;
   double background_floor = 0.0;
   std::size_t band_voxels = 0;
   FitPassFigures before;  ///< the carved band as it started

@@ -17,6 +17,10 @@ struct MapFitParams {
   double elevation_step_rad = 0.4 * 3.14159265358979323846 / 180.0;
   /// Ray samples per range bin (one: the bins are as fine as the voxels).
   int samples_per_bin = 1;
+  /// Whether the fit also takes the elevation beam profile and the background per range bin
+  /// from the frames (fit/beam_background_fit.h), starting from the declared ones.
+  bool beam = true;
+  bool background = true;
 };
 
 }  // namespace sonarcarve

@@ -100,4 +100,22 @@ double ElevationProfile::power(double theta_rad) const {
   return std::pow(10.0, levelDb(theta_rad) / 10.0);
 }
 
+double ElevationProfile::width(double level_db) const {
+  const double axis = levelDb(0.0);
+  constexpr int kSteps = 4000;
+  double previous = 0.0;
+  for (int i = 1; i <= kSteps; ++i) {
+    const double theta = theta_max_rad_ * i / kSteps;
+    const double below = axis - levelDb(theta);
+    if (below >= -level_db) {
+      // Between the last two steps, linearly in dB.
+      const double before = axis - levelDb(previous);
+      const double share = (-level_db - before) / std::max(below - before, 1e-12);
+      return 2.0 * (previous + share * (theta - previous));
+    }
+    previous = theta;
+  }
+  return 2.0 * theta_max_rad_;
+}
+
 }  // namespace sonarcarve

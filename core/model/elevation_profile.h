@@ -45,6 +45,9 @@ class ElevationProfile {
   /// Level in dB and power at `theta_rad`.
   double levelDb(double theta_rad) const;
   double power(double theta_rad) const;
+  /// Full width (radians) of the main lobe at `level_db` below the level on the axis: twice
+  /// the first |theta| where the profile falls that far (thetaMax if it never does).
+  double width(double level_db) const;
 
  private:
   double theta_max_rad_;

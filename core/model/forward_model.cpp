@@ -205,14 +205,21 @@ class GradientSums {
     out.gain += ray.unit_scale * ray.beam_weight * upstream_sum;
   }
 
-  ModelGradient total() const {
+  /// The sums, and the background's: over the traced beams' columns only (the others are no
+  /// part of the model's prediction, so none of its gradient).
+  ModelGradient total(int beam_stride, int beam_offset) const {
     ModelGradient sum(per_slot_.front()->logits.size(), per_slot_.front()->knots_db.size(),
                       per_slot_.front()->background.size());
     for (const auto& slot : per_slot_) {
       sum.add(*slot);
     }
     for (int row = 0; row < dloss_.rows; ++row) {
-      sum.background[static_cast<std::size_t>(row)] = cv::sum(dloss_.row(row))[0];
+      const auto* dloss = dloss_.ptr<double>(row);
+      double traced = 0.0;
+      for (int col = beam_offset; col < dloss_.cols; col += beam_stride) {
+        traced += dloss[col];
+      }
+      sum.background[static_cast<std::size_t>(row)] = traced;
     }
     return sum;
   }
@@ -289,7 +296,7 @@ ModelGradient ForwardModel::gradient(const BlockGrid& grid, const FrameView& vie
              [&](const ModelRay& ray, std::span<const RaySample> samples, unsigned slot) {
                sums.add(ray, samples, slot);
              });
-  return sums.total();
+  return sums.total(settings_.beam_stride, settings_.beam_offset);
 }
 
 void ForwardModel::trace(const BlockGrid& grid, const FrameView& view, FrameTrace& trace) const {
@@ -342,7 +349,7 @@ ModelGradient ForwardModel::gradient(const FrameTrace& trace, const BlockGrid& g
         }
         sums.add(ray, samples, slot);
       });
-  return sums.total();
+  return sums.total(settings_.beam_stride, settings_.beam_offset);
 }
 
 }  // namespace sonarcarve

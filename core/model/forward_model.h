@@ -37,7 +37,8 @@ struct ModelSettings {
   double min_alpha = 1e-3;          ///< samples less occupied count as empty
   double min_transmittance = 1e-4;  ///< a ray stops when less than this gets through
   /// Only beams beam_offset, beam_offset + beam_stride, ... are traced; the others' columns
-  /// are predicted empty (the background alone) and take no gradient. A fit that alternates
+  /// are predicted empty (the background alone) and take no gradient (nor give the
+  /// background any). A fit that alternates
   /// the offset between its steps sees every beam at a fraction of the cost.
   int beam_stride = 1;
   int beam_offset = 0;

@@ -463,6 +463,20 @@ std::vector<ParamSpec> makeSchema() {
        .gui = {.group = "Fit", .label = "Band", .advanced = true, .min = 1, .max = 16},
        .access = field([](auto& p) -> auto& { return p.fit.band_voxels; }),
        .applies = fitsMap},
+      {.key = "fit.beam",
+       .help = "fit: also fit the elevation beam profile from the frames, starting from the "
+               "declared one (which then only holds where no frame says otherwise)",
+       .flag = "--fit-beam",
+       .gui = {.group = "Fit", .label = "Fit the elevation beam", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.fit.beam; }),
+       .applies = fitsMap},
+      {.key = "fit.background",
+       .help = "fit: also fit the background per range bin from the frames, starting from the "
+               "noise model's mean",
+       .flag = "--fit-background",
+       .gui = {.group = "Fit", .label = "Fit the background", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.fit.background; }),
+       .applies = fitsMap},
 
       // Frames.
       {.key = "frames.first",

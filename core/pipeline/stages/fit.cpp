@@ -55,6 +55,37 @@ RunChoice fitChoice(const MapFitSummary& summary, std::size_t carved_points,
   return choice;
 }
 
+std::string degrees(double radians) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f deg", radians * 180.0 / 3.14159265358979323846);
+  return text;
+}
+
+// The fitted elevation beam beside the declared one: -3 and -10 dB widths, and the knots.
+RunChoice beamChoice(const MapFitSummary& summary) {
+  const ElevationProfile& declared = *summary.declared_profile;
+  const ElevationProfile& fitted = *summary.fitted_profile;
+  RunChoice choice;
+  choice.name = "fitted elevation beam";
+  choice.value = "fitted";
+  choice.reason = "the frames' elevation beam: -3 dB wide " + degrees(fitted.width(-3.0)) +
+                  " (declared " + degrees(declared.width(-3.0)) + "), -10 dB wide " +
+                  degrees(fitted.width(-10.0)) + " (declared " + degrees(declared.width(-10.0)) +
+                  ")";
+  std::string knots;
+  for (std::size_t m = 0; m < fitted.knotsDb().size(); ++m) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%s%.1f: %.1f (%.1f)", m == 0 ? "" : ", ",
+                  fitted.knotAngle(static_cast<int>(m)) * 180.0 / 3.14159265358979323846,
+                  fitted.knotsDb()[m], declared.knotsDb()[m]);
+    knots += text;
+  }
+  choice.detail = "level in dB at elevations in deg, fitted (declared): " + knots +
+                  "; background mean " + std::to_string(summary.fitted_background) + " (start " +
+                  std::to_string(summary.declared_background) + ")";
+  return choice;
+}
+
 class FitStage : public Stage {
  public:
   FitStage() : Stage("fit", 1.0) {}
@@ -92,6 +123,9 @@ class FitStage : public Stage {
     SurfacePoints fitted = fittedSurface(grid.grid, run.sonar, frames, run.params.fit,
                                          run.params.min_views, run.pool, progress);
     run.choose(fitChoice(summary, result.surface.size(), fitted.size()));
+    if (run.params.fit.beam && summary.fitted_profile) {
+      run.choose(beamChoice(summary));
+    }
     result.surface = std::move(fitted);
   }
 };
