@@ -128,9 +128,13 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
   FrameView view{Eigen::Isometry3d::Identity(), declaredProfile(sonar_), 1.0, {}};
   double observed = 0.0;
   double predicted = 0.0;
+  // The sampled frames' returns at unit gain: the frames before the fit are these times the
+  // gain, plus the background.
+  std::vector<cv::Mat> unit_returns;
   for (std::size_t s = 0; s < sample.size(); ++s) {
     view.T_world_sonar = frames[sampled[s]].T_world_sonar;
     const cv::Mat returned = model.predict(grid, view);
+    unit_returns.push_back(returned);
     const cv::Mat excess = cv::max(asDouble(sample[s]) - background_image, 0.0);
     cv::Mat where_returned;
     cv::Mat(returned > 0.0).convertTo(where_returned, CV_64F, 1.0 / 255.0);
@@ -164,9 +168,14 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
   // Sum of |observed - background| over the sampled frames, for the figures' ratio.
   double returns = 0.0;
   FrameTrace trace;
+  auto score = [&](const cv::Mat& prediction, const cv::Mat& image, FitPassFigures& figures,
+                   cv::Mat* dloss) {
+    figures.nll_per_pixel += speckleNll(prediction, image, dloss);
+    figures.unexplained += cv::norm(image, prediction, cv::NORM_L1);
+  };
   // One look at a frame: its figures, and the gradient when asked.
   auto look = [&](const ForwardModel& with, const MapFitFrame& frame, FitPassFigures& figures,
-                  ModelGradient* gradient, bool first_look = false) {
+                  ModelGradient* gradient) {
     if (progress.cancelled()) {
       throw Cancelled();
     }
@@ -176,13 +185,8 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
       with.trace(grid, view, trace);
     }
     const cv::Mat prediction = gradient ? with.predict(trace, view) : with.predict(grid, view);
-    const cv::Mat image = asDouble(load(frame.index));
     cv::Mat dloss;
-    figures.nll_per_pixel += speckleNll(prediction, image, gradient ? &dloss : nullptr);
-    figures.unexplained += cv::norm(image, prediction, cv::NORM_L1);
-    if (first_look) {
-      returns += cv::norm(image, background_image, cv::NORM_L1);
-    }
+    score(prediction, asDouble(load(frame.index)), figures, gradient ? &dloss : nullptr);
     if (gradient) {
       gradient->add(with.gradient(trace, grid, view, dloss));
     }
@@ -194,9 +198,13 @@ MapFitSummary MapFit::run(FitGrid& fit, const std::vector<MapFitFrame>& frames,
     return figures;
   };
   FitPassFigures before;
-  for (const std::size_t k : sampled) {
-    look(model, frames[k], before, nullptr, true);
+  for (std::size_t s = 0; s < sample.size(); ++s) {
+    const cv::Mat image = asDouble(sample[s]);
+    score(unit_returns[s] * view.gain + background_image, image, before, nullptr);
+    returns += cv::norm(image, background_image, cv::NORM_L1);
+    progress.report("fit", ++done, work);
   }
+  unit_returns.clear();
   summary.before = finish(before);
 
   std::vector<std::size_t> order(frames.size());
