@@ -15,7 +15,7 @@ constexpr double kVoxelReach = static_cast<double>(kKeyHalf * kBlockSide);
 }  // namespace
 
 BlockGrid::BlockGrid(double voxel_size_m, float empty_logit)
-    : voxel_size_m_(voxel_size_m), empty_logit_(empty_logit) {
+    : voxel_size_m_(voxel_size_m), inverse_size_(1.0 / voxel_size_m), empty_logit_(empty_logit) {
   if (!(voxel_size_m > 0.0) || !std::isfinite(voxel_size_m)) {
     throw Error("model grid", "voxel size", "expected a positive finite voxel size");
   }
@@ -35,7 +35,7 @@ std::int64_t BlockGrid::blockKey(const Eigen::Vector3i& block) {
 
 bool BlockGrid::voxelOf(const Eigen::Vector3d& p_world, Eigen::Vector3i& voxel) const {
   for (int axis = 0; axis < 3; ++axis) {
-    const double u = std::floor(p_world[axis] / voxel_size_m_);
+    const double u = std::floor(p_world[axis] * inverse_size_);
     if (!(std::abs(u) < kVoxelReach)) {
       return false;
     }

@@ -31,7 +31,8 @@ class BlockGrid {
 
   /// The key of a block; throws Error if a coordinate is outside [-2^20, 2^20).
   static std::int64_t blockKey(const Eigen::Vector3i& block);
-  /// The voxel that contains a world point (floor), if it is within the grid's reach.
+  /// The voxel that contains a world point (floor of p / size, computed as p times 1 / size),
+  /// if it is within the grid's reach.
   bool voxelOf(const Eigen::Vector3d& p_world, Eigen::Vector3i& voxel) const;
   Eigen::Vector3d voxelCentre(const Eigen::Vector3i& voxel) const {
     return (voxel.cast<double>().array() + 0.5).matrix() * voxel_size_m_;
@@ -72,6 +73,7 @@ class BlockGrid {
 
  private:
   double voxel_size_m_;
+  double inverse_size_;  // voxelOf multiplies: the rays' every step asks it
   float empty_logit_;
   // Blocks are also found through a dense table over a box around them while that box holds at
   // most kDenseCells blocks (a structure's band; the rays' many look-ups of absent blocks then

@@ -63,8 +63,14 @@ bool StencilReader::inSampledCell(const Eigen::Vector3d& p, const Eigen::Vector3
     exit_m = grid_.voxelSize();
     return false;
   }
-  findBlocks(voxel, voxel);
-  const int block = blocks_[0];
+  // One block of its own remembered: the stencil's reads keep findBlocks' range for theirs.
+  const Eigen::Vector3i block_coords = BlockGrid::blockOf(voxel);
+  if (!sampled_found_ || block_coords != sampled_block_) {
+    sampled_block_ = block_coords;
+    sampled_index_ = grid_.findBlock(block_coords);
+    sampled_found_ = true;
+  }
+  const int block = sampled_index_;
   if (block >= 0 && (active_ == nullptr || active_->active(block, voxel))) {
     return true;
   }

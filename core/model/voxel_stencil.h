@@ -65,6 +65,9 @@ class StencilReader {
   Eigen::Vector3i block_hi_{0, 0, 0};
   std::array<int, 8> blocks_{};  // of block_lo_ / block_hi_ on each axis
   bool found_ = false;
+  Eigen::Vector3i sampled_block_{0, 0, 0};  // inSampledCell's last block and its index
+  int sampled_index_ = -1;
+  bool sampled_found_ = false;
 };
 
 }  // namespace sonarcarve
