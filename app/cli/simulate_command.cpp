@@ -295,10 +295,10 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
       ->check(CLI::IsMember({"clipped", "realistic"}))
       ->capture_default_str();
   cmd->add_option("--elevation-beam", o->elevation_beam,
-                  "Realistic beam: the pattern simulated in elevation, all -3 dB at "
-                  "+-aperture/2: sinc2 (side lobes to the second null); gaussian (traced to "
-                  "-30 dB); truncated (sinc^2 cut to 0 past its -6 dB points); table:FILE (CSV "
-                  "of elevation_deg,gain_db, linear in dB, 0 outside). mission.yaml declares "
+                  "Realistic beam: the pattern simulated in elevation. -3 dB at +-aperture/2: "
+                  "sinc2 (side lobes to the second null); gaussian (traced to -30 dB); "
+                  "truncated (sinc^2 cut to 0 past its -6 dB points). table:FILE: a CSV of "
+                  "elevation_deg,gain_db, linear in dB, 0 outside. mission.yaml declares "
                   "--declared-beam whatever is simulated (docs/simulator.md)")
       ->capture_default_str();
   cmd->add_option("--declared-beam", o->declared_beam,

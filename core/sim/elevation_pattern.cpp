@@ -1,6 +1,7 @@
 #include "sim/elevation_pattern.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include "common/angles.h"
@@ -41,6 +42,20 @@ double tablePower(const std::vector<ElevationTableRow>& rows, double theta) {
   const ElevationTableRow& b = *above;
   const double t = (deg - a.elevation_deg) / (b.elevation_deg - a.elevation_deg);
   return fromDecibels(a.gain_db + t * (b.gain_db - a.gain_db));
+}
+
+// Cell `column` of a table's row as a finite number; an Error naming its line otherwise.
+double number(const CsvTable& csv, const CsvTable::Row& row, std::size_t column) {
+  const std::string& cell = row.cells[column];
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+  if (cell.empty() || ec != std::errc() || end != cell.data() + cell.size() ||
+      !std::isfinite(value)) {
+    throw Error(csv.file(), linePlace(row.line),
+                std::string("expected ") + (column == 0 ? "elevation_deg" : "gain_db") +
+                    " as a finite number, found '" + cell + "'");
+  }
+  return value;
 }
 
 }  // namespace
@@ -97,7 +112,7 @@ std::vector<ElevationTableRow> parseElevationTable(std::string_view text, const 
     if (rows.empty() && row.cells[0] == "elevation_deg" && row.cells[1] == "gain_db") {
       continue;  // the header line
     }
-    const ElevationTableRow r{csv.number(row, 0), csv.number(row, 1)};
+    const ElevationTableRow r{number(csv, row, 0), number(csv, row, 1)};
     if (!(std::abs(r.elevation_deg) < 90.0)) {
       throw Error(file, linePlace(row.line),
                   "expected an elevation between -90 and 90 degrees, found " + csv.text(row, 0));

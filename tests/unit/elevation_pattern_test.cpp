@@ -111,11 +111,14 @@ TEST(ElevationPattern, BadTablesAreRefusedNamingTheFileAndLine) {
   test::expectError([&] { parse("-5,-3\n0,0\n5"); }, {"b.csv", "line 3", "2 values"});
   test::expectError([&] { parse("-5,-3\n5,-3\n0,0\n"); }, {"b.csv", "line 3", "sorted"});
   test::expectError([&] { parse("-5,-3\n-5,0\n"); }, {"b.csv", "line 2", "increasing"});
-  test::expectError([&] { parse("-5,-3\n0,nan\n5,-3\n"); }, {"b.csv", "line 2", "finite"});
-  test::expectError([&] { parse("-5,-3\n0,inf\n"); }, {"b.csv", "line 2", "finite"});
+  test::expectError([&] { parse("-5,-3\n0,nan\n5,-3\n"); },
+                    {"b.csv", "line 2", "gain_db as a finite number"});
+  test::expectError([&] { parse("-5,-3\n0,inf\n"); },
+                    {"b.csv", "line 2", "gain_db as a finite number"});
   test::expectError([&] { parse("-95,-3\n0,0\n"); }, {"b.csv", "line 1", "-90 and 90"});
   test::expectError([&] { parse("-5,-3,1\n0,0,1\n"); }, {"b.csv", "line 1", "2 values"});
-  test::expectError([&] { parse("angle,gain\n0,0\n1,-1\n"); }, {"b.csv", "line 1", "finite"});
+  test::expectError([&] { parse("angle,gain\n0,0\n1,-1\n"); },
+                    {"b.csv", "line 1", "elevation_deg as a finite number"});
 }
 
 TEST(ElevationPattern, SpecsNameAFamilyOrATableFile) {
