@@ -36,6 +36,8 @@ struct SimulateOptions {
   double elevation_step_deg = 0.1;
   int rays_per_beam = 2;
   std::string beam = "realistic";
+  std::string elevation_beam = "sinc2";
+  std::string declared_beam;  // empty: what the chosen --beam declares
   double horizontal_beam_width_deg = 0.0;
   double spreading_exponent = 0.0;
   double tvg_exponent = 0.0;
@@ -69,6 +71,14 @@ NoiseSpec noiseFrom(const std::string& choice, std::uint64_t seed) {
   }
   spec.seed = seed;
   return spec;
+}
+
+// --declared-beam: sinc, clipped, or not given (empty).
+std::optional<ElevationBeam> declaredBeam(const std::string& name) {
+  if (name.empty()) {
+    return std::nullopt;
+  }
+  return name == "clipped" ? ElevationBeam::Clipped : ElevationBeam::MainLobe;
 }
 
 // The rays of one frame, checked before the simulator allocates or traces them.
@@ -113,6 +123,11 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   imaging.elevation_step_rad = degToRad(o.elevation_step_deg);
   imaging.rays_per_beam = o.rays_per_beam;
   imaging.beam = beamFromName(o.beam);
+  if (o.elevation_beam != "sinc2" && imaging.beam != SimulatedBeam::Realistic) {
+    throw Error("--elevation-beam", o.elevation_beam,
+                "expected --beam realistic: the clipped beam has the seed paper's pattern");
+  }
+  imaging.elevation_beam = elevationBeamSpec(o.elevation_beam);
   imaging.horizontal_beam_width_rad = degToRad(o.horizontal_beam_width_deg);
   imaging.visible_cell_m = o.visible_cell_m;
   imaging.spreading_exponent = o.spreading_exponent;
@@ -138,7 +153,8 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
       navErrorWithSeed(o.nav_error, o.seed),
       o.empty_water,
       o.max_frames >= 0 ? std::optional<int>(o.max_frames) : std::nullopt,
-      out};
+      out,
+      declaredBeam(o.declared_beam)};
   prepareOutputFolder(out);
   // Two runs into one folder would mix their frames, navigation and ground truth.
   const OutputFolderLock lock(out);
@@ -278,6 +294,18 @@ void addSimulateCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "elevation to the second null and leakage between beams (docs/simulator.md)")
       ->check(CLI::IsMember({"clipped", "realistic"}))
       ->capture_default_str();
+  cmd->add_option("--elevation-beam", o->elevation_beam,
+                  "Realistic beam: the pattern simulated in elevation. -3 dB at +-aperture/2: "
+                  "sinc2 (side lobes to the second null); gaussian (traced to -30 dB); "
+                  "truncated (sinc^2 cut to 0 past its -6 dB points). table:FILE: a CSV of "
+                  "elevation_deg,gain_db, linear in dB, 0 outside. mission.yaml declares "
+                  "--declared-beam whatever is simulated (docs/simulator.md)")
+      ->capture_default_str();
+  cmd->add_option("--declared-beam", o->declared_beam,
+                  "The elevation beam mission.yaml declares to the reconstruction: sinc (a real "
+                  "beam) or clipped (nothing outside +-aperture/2); default: clipped for --beam "
+                  "clipped, else sinc")
+      ->check(CLI::IsMember({"sinc", "clipped"}));
   cmd->add_option("--horizontal-beam-width", o->horizontal_beam_width_deg,
                   "Realistic beam: -3 dB width of each beam in bearing, deg, written to "
                   "mission.yaml so that reconstruction takes the blur out; 0 = the bearing "

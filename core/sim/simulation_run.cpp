@@ -19,7 +19,7 @@ namespace {
 
 std::string settingsYaml(const SimulationRequest& r, const std::optional<SeabedFieldSpec>& f,
                          const SeabedReliefSpec& relief, std::size_t frames,
-                         double traced_elevation_rad) {
+                         double traced_elevation_rad, ElevationBeam declared) {
   std::ostringstream out;
   const auto& t = r.trajectory;
   out << "# Settings this mission was simulated with (sonarcarve-cli simulate).\n"
@@ -64,6 +64,13 @@ std::string settingsYaml(const SimulationRequest& r, const std::optional<SeabedF
       << "  spreading_exponent: " << shortestNumber(r.imaging.spreading_exponent) << "\n"
       << "  tvg_exponent: " << shortestNumber(r.imaging.tvg_exponent) << "\n"
       << "  beam: " << beamName(r.imaging.beam) << "\n"
+      << "  elevation_beam: " << elevationFamilyName(r.imaging.elevation_beam.family) << "\n";
+  if (r.imaging.elevation_beam.table) {
+    YAML::Emitter file;
+    file << YAML::DoubleQuoted << r.imaging.elevation_beam.table->file;
+    out << "  elevation_beam_table: " << file.c_str() << "\n";
+  }
+  out << "  declared_beam: " << elevationBeamName(declared) << "\n"
       << "  traced_elevation_deg: " << shortestDegrees(traced_elevation_rad) << "\n"
       << "  side_lobes: " << r.imaging.side_lobes << "\n"
       << "  horizontal_beam_width_deg: " << shortestDegrees(r.imaging.horizontal_beam_width_rad)
@@ -126,10 +133,14 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   // A clipped beam images nothing outside the aperture: the mission says so, for carving. A
   // realistic one given a horizontal beam width says how wide, so that its blur across
   // bearing can be taken out (sonar/bearing_deblur.h).
+  // The elevation beam it declares may differ from the simulated one (SimulationRequest).
   const bool clipped = request.imaging.beam == SimulatedBeam::Clipped;
+  const ElevationBeam declared = request.declared_beam.value_or(
+      clipped ? ElevationBeam::Clipped : request.sonar.elevationBeam());
   const SonarModel mission_sonar =
-      clipped ? request.sonar.withElevationBeam(ElevationBeam::Clipped)
-              : request.sonar.withHorizontalBeamWidth(request.imaging.horizontal_beam_width_rad);
+      clipped ? request.sonar.withElevationBeam(declared)
+              : request.sonar.withElevationBeam(declared).withHorizontalBeamWidth(
+                    request.imaging.horizontal_beam_width_rad);
   MissionWriter writer(
       request.output,
       scene_name + (request.empty_water ? " (empty water)" : "") + " / " + request.trajectory.kind,
@@ -185,7 +196,7 @@ SimulationResult runSimulation(const SimulationRequest& request, Progress& progr
   }
   writeFileAtomically(
       request.output / "simulation.yaml",
-      settingsYaml(request, field_spec, relief, written, renderer.tracedElevation()));
+      settingsYaml(request, field_spec, relief, written, renderer.tracedElevation(), declared));
   result.visible_points = visible.size();
   result.most_triangles_traced = renderer.mostTriangles();
   result.ground_truth_triangles =

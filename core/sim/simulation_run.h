@@ -38,6 +38,10 @@ struct SimulationRequest {
   bool empty_water = false;       ///< frames of empty water (no scene returns): noise only
   std::optional<int> max_frames;  ///< stop after this many frames
   std::filesystem::path output;
+  /// The elevation beam mission.yaml declares, which may differ from the simulated one
+  /// (ImagingSettings::elevation_beam); not given: clipped for the clipped beam, else the
+  /// sonar's own (a real beam).
+  std::optional<ElevationBeam> declared_beam = std::nullopt;
 };
 
 struct SimulationResult {

@@ -82,9 +82,12 @@ SonarSimulator::SonarSimulator(const RayCaster& caster, const SonarModel& sonar,
   }
   const double aperture = sonar.verticalAperture();
   const bool realistic = settings_.beam == SimulatedBeam::Realistic;
-  const SincSquaredBeam elevation_beam(aperture);
-  traced_elevation_rad_ =
-      realistic ? elevation_beam.null(settings_.side_lobes + 1) : 0.5 * aperture;
+  if (!realistic && settings_.elevation_beam.family != ElevationFamily::Sinc2) {
+    throw Error("simulator", "settings",
+                "expected the realistic beam for an elevation beam other than sinc2");
+  }
+  const ElevationPattern elevation_beam(settings_.elevation_beam, aperture, settings_.side_lobes);
+  traced_elevation_rad_ = realistic ? elevation_beam.tracedHalfAngle() : 0.5 * aperture;
   fan_ = elevationFan(traced_elevation_rad_, settings_.elevation_step_rad);
   elevations_ = fan_.count;
   const int rays = settings_.rays_per_beam;
@@ -93,7 +96,8 @@ SonarSimulator::SonarSimulator(const RayCaster& caster, const SonarModel& sonar,
       realistic
           ? static_cast<float>(elevationSampleScale(settings_.gain, fan_.step_rad, aperture, rays))
           : static_cast<float>(settings_.gain) / static_cast<float>(elevations_ * rays);
-  const double visible_half = elevation_beam.halfAngleAt(settings_.visible_beam_level_db);
+  // Seen: within the pattern's level (the clipped beam's sinc2: as the realistic's default).
+  const auto visible = elevation_beam.interval(settings_.visible_beam_level_db);
   for (int k = 0; k < elevations_; ++k) {
     const double theta = fan_.angle(k);
     // Realistic: a ray stands for a cell of solid angle cos(theta) dtheta dphi, so that a
@@ -101,7 +105,8 @@ SonarSimulator::SonarSimulator(const RayCaster& caster, const SonarModel& sonar,
     beam_weight_.push_back(
         static_cast<float>(realistic ? solidAngleWeight(elevation_beam.power(theta), theta)
                                      : sonar.beamPattern().weight(theta)));
-    visible_elevation_.push_back(static_cast<char>(std::abs(theta) <= visible_half));
+    visible_elevation_.push_back(
+        static_cast<char>(theta >= visible.first && theta <= visible.second));
   }
   if (realistic) {
     addBearingLeakage(sonar);

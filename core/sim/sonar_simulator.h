@@ -9,9 +9,10 @@
 // - Realistic: p is sinc^2 (-3 dB at +-aperture/2, sonar/beam_pattern.h) times cos(theta), the
 //   solid angle of a ray's cell, traced in elevation past the main lobe to the null after the
 //   last traced side lobe (the second null, +-45.2 degrees for a 20 degree aperture, by
-//   default); in bearing each beam also takes the rays of its neighbours, weighted by a sinc^2
-//   of the horizontal beam width, to the same null (bearing leakage), rays being traced past
-//   the fan's edges for the outer beams.
+//   default), or another family of elevation pattern (ImagingSettings::elevation_beam,
+//   sim/elevation_pattern.h) traced as far as it reaches; in bearing each beam also takes the rays
+//   of its neighbours, weighted by a sinc^2 of the horizontal beam width, to the same null (bearing
+//   leakage), rays being traced past the fan's edges for the outer beams.
 // - Clipped: the seed paper's model, p = the sinc of BeamPattern over |theta| <= aperture/2
 //   only, each ray in its own beam.
 //
@@ -31,6 +32,7 @@
 
 #include "common/thread_pool.h"
 #include "model/elevation_fan.h"
+#include "sim/elevation_pattern.h"
 #include "sim/ray_caster.h"
 #include "sonar/sonar_model.h"
 
@@ -61,6 +63,9 @@ struct ImagingSettings {
   /// Realistic beam: side lobes traced on each side, in elevation and in bearing; the traced
   /// extent ends at the null after the last of them (>= 0; 0 = the main lobe only).
   int side_lobes = 1;
+  /// Realistic beam: the pattern in elevation (sim/elevation_pattern.h); sinc2 by default.
+  /// The clipped beam takes only sinc2 (which it ignores).
+  ElevationBeamSpec elevation_beam;
   /// Realistic beam: -3 dB width of each beam in bearing; 0 = its spacing in the bearing table.
   double horizontal_beam_width_rad = 0.0;
   /// Hits reported as seen (HitSink) lie inside the elevation main lobe where its power is at

@@ -59,6 +59,10 @@ SonarModel::SonarModel(std::string id, RangeBins range, BearingTable bearings,
   }
 }
 
+const char* elevationBeamName(ElevationBeam beam) {
+  return beam == ElevationBeam::Clipped ? "clipped" : "sinc";
+}
+
 SonarModel SonarModel::withHorizontalBeamWidth(double width_rad) const {
   if (!(width_rad >= 0.0) || !std::isfinite(width_rad) || width_rad >= bearings_.fieldOfView()) {
     throw Error("sonar model", "horizontal beam width",

@@ -42,6 +42,8 @@ Polar polarFromPoint(const Eigen::Vector3d& p_sonar);
 /// weighs it); Clipped: nothing is imaged outside +-aperture/2 (the seed paper's simulator and
 /// ours with `--beam clipped`), so carving stays inside the aperture.
 enum class ElevationBeam { MainLobe, Clipped };
+/// Its name in mission.yaml's beam_pattern: "sinc" (MainLobe) or "clipped".
+const char* elevationBeamName(ElevationBeam beam);
 
 class SonarModel {
  public:

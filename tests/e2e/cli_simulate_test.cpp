@@ -131,6 +131,52 @@ TEST(CliSimulate, ClippedBeamIsRecordedInTheSettings) {
   EXPECT_NE(bad.output.find("--beam"), std::string::npos) << bad.output;
 }
 
+TEST(CliSimulate, SimulatedAndDeclaredElevationBeamsAreSetApart) {
+  test::ScratchDir dir;
+  const auto out = dir.path() / "riser";
+  const auto r = runCli(
+      "simulate --scene riser --max-frames 1 --elevation-beam gaussian --declared-beam clipped "
+      "--out " +
+      quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The mission declares the clipped beam; the frames were made with a Gaussian, traced to
+  // -30 dB (sqrt(10) times aperture/2).
+  EXPECT_EQ(readMission(out).sonar.elevationBeam(), ElevationBeam::Clipped);
+  const std::string settings = test::readText(out / "simulation.yaml");
+  EXPECT_NE(settings.find("beam: realistic\n"), std::string::npos) << settings;
+  EXPECT_NE(settings.find("elevation_beam: gaussian\n"), std::string::npos) << settings;
+  EXPECT_NE(settings.find("declared_beam: clipped\n"), std::string::npos) << settings;
+  EXPECT_NEAR(settingValue(settings, "traced_elevation_deg"), 31.62, 0.01) << settings;
+
+  // A table: its file recorded; a bad one refused naming its line.
+  const auto table = dir.path() / "beam.csv";
+  test::writeText(table, "elevation_deg,gain_db\n-15,-12\n0,0\n15,-12\n");
+  const auto t =
+      runCli("simulate --scene riser --max-frames 1 --elevation-beam table:" + quoted(table) +
+             " --out " + quoted(dir.path() / "t"));
+  ASSERT_EQ(t.exit_code, 0) << t.output;
+  EXPECT_EQ(readMission(dir.path() / "t").sonar.elevationBeam(), ElevationBeam::MainLobe);
+  const std::string table_settings = test::readText(dir.path() / "t" / "simulation.yaml");
+  EXPECT_NE(table_settings.find("elevation_beam: table\n"), std::string::npos) << table_settings;
+  EXPECT_NE(table_settings.find("elevation_beam_table: \"" + table.string() + "\""),
+            std::string::npos)
+      << table_settings;
+  EXPECT_NE(table_settings.find("declared_beam: sinc\n"), std::string::npos) << table_settings;
+  test::writeText(table, "-15,-12\n15,-12\n0,0\n");
+  const auto unsorted = runCli("simulate --scene riser --elevation-beam table:" + quoted(table) +
+                               " --out " + quoted(dir.path() / "u"));
+  EXPECT_NE(unsorted.exit_code, 0);
+  EXPECT_NE(unsorted.output.find("line 3"), std::string::npos) << unsorted.output;
+  EXPECT_NE(unsorted.output.find("sorted"), std::string::npos) << unsorted.output;
+  // The clipped beam keeps the seed paper's pattern.
+  const auto clipped = runCli(
+      "simulate --scene riser --beam clipped --elevation-beam truncated "
+      "--out " +
+      quoted(dir.path() / "c"));
+  EXPECT_NE(clipped.exit_code, 0);
+  EXPECT_NE(clipped.output.find("--beam realistic"), std::string::npos) << clipped.output;
+}
+
 TEST(CliSimulate, CoherentNoiseAndSpreadingLossAreRecordedInTheSettings) {
   test::ScratchDir dir;
   const auto out = dir.path() / "riser";

@@ -10,6 +10,7 @@
 #include "common/angles.h"
 #include "io/files/frame_png.h"
 #include "sim/demo_scenes.h"
+#include "sim/elevation_pattern.h"
 #include "sim/ray_caster.h"
 #include "sim/simulation_run.h"
 #include "sim/sonar_simulator.h"
@@ -67,6 +68,19 @@ double integral(F f, double a, double b) {
   return sum * h / 3.0;
 }
 
+// What a band over [lo, hi] may gain or lose to the elevation samples, `step` apart: each end
+// up to one sample, at most twice the step times the largest weight within a step of an edge.
+template <typename F>
+double bandEdgeError(F weight, double lo, double hi, double step) {
+  double worst = 0.0;
+  for (double edge : {lo, hi}) {
+    for (double t = edge - step; t <= edge + step; t += 0.1 * step) {
+      worst = std::max(worst, weight(t));
+    }
+  }
+  return 2.0 * step * worst;
+}
+
 TEST(SimBeam, RealisticElevationBeamFollowsSincSquared) {
   const SonarModel sonar = smallSonar();
   const double step = degToRad(0.01);
@@ -77,15 +91,7 @@ TEST(SimBeam, RealisticElevationBeamFollowsSincSquared) {
   // Its edges fall anywhere between two samples: each end may gain or lose up to one sample.
   const double h = degToRad(0.5);
   const auto weight = [&](double t) { return beam.power(t) * std::cos(t); };
-  const auto edgeError = [&](double c) {
-    double worst = 0.0;
-    for (double edge : {c - h, c + h}) {
-      for (double t = edge - step; t <= edge + step; t += 0.1 * step) {
-        worst = std::max(worst, weight(t));
-      }
-    }
-    return 2.0 * step * worst;
-  };
+  const auto edgeError = [&](double c) { return bandEdgeError(weight, c - h, c + h, step); };
   const double on_axis = bandEnergy(sonar, settings, -h, h);
   const double expected_on_axis = integral(weight, -h, h);
   ASSERT_GT(on_axis, 0.0);
@@ -127,6 +133,66 @@ TEST(SimBeam, RealisticElevationBeamFollowsSincSquared) {
   EXPECT_GT(lobe_energy, at(beam.sideLobePeak(1) + degToRad(3)));
   // Traced to the second null, nothing beyond.
   EXPECT_EQ(bandEnergy(sonar, settings, beam.null(2) + step, beam.null(2) + degToRad(3)), 0.0);
+}
+
+// Image energy of a band of the sphere at normal incidence, per beam, per unit of gain and of
+// reflectivity (0.8): the integral of p(theta) cos(theta) / A over the band's traced part.
+double bandResponse(const SonarModel& sonar, const ImagingSettings& s, double lo, double hi) {
+  return bandEnergy(sonar, s, lo, hi) / (sonar.cols() * s.gain * 0.8);
+}
+
+TEST(SimBeam, EveryElevationFamilyReturnsItsPatternPerUnitOfGain) {
+  // A wall across the whole traced beam returns the integral of p cos / A per unit of gain,
+  // whatever the family: sinc2's is today's meaning of the counts, the others keep it. The
+  // simulator's wall comes out 0.2 to 0.3 % under the integral for every family (sinc2 included,
+  // as before the families), so the families are held to that and to sinc2's ratio within 1e-3.
+  const SonarModel sonar = smallSonar();
+  const double aperture = sonar.verticalAperture();
+  ImagingSettings s = realistic(0.02);
+  double sinc2_ratio = 0.0;
+  for (const auto family :
+       {ElevationFamily::Sinc2, ElevationFamily::Gaussian, ElevationFamily::Truncated}) {
+    s.elevation_beam.family = family;
+    const ElevationPattern pattern(s.elevation_beam, aperture, s.side_lobes);
+    const double traced = pattern.tracedHalfAngle();
+    const auto weight = [&](double t) { return pattern.power(t) * std::cos(t) / aperture; };
+    const double ratio = bandResponse(sonar, s, -traced - degToRad(1), traced + degToRad(1)) /
+                         integral(weight, -traced, traced);
+    EXPECT_NEAR(ratio, 1.0, 5e-3) << elevationFamilyName(family);
+    if (family == ElevationFamily::Sinc2) {
+      sinc2_ratio = ratio;
+    }
+    EXPECT_NEAR(ratio, sinc2_ratio, 1e-3) << elevationFamilyName(family);
+    // Nothing beyond the traced extent.
+    EXPECT_EQ(bandEnergy(sonar, s, traced + degToRad(0.05), traced + degToRad(3)), 0.0)
+        << elevationFamilyName(family);
+  }
+}
+
+TEST(SimBeam, GaussianElevationBeamFollowsItsPattern) {
+  // Bands 1 degree high along the Gaussian, against the integral of its p cos / A over each,
+  // within one elevation sample at each edge.
+  const SonarModel sonar = smallSonar();
+  const double aperture = sonar.verticalAperture();
+  ImagingSettings s = realistic(0.01);
+  s.elevation_beam.family = ElevationFamily::Gaussian;
+  const ElevationPattern pattern(s.elevation_beam, aperture, s.side_lobes);
+  const auto weight = [&](double t) { return pattern.power(t) * std::cos(t) / aperture; };
+  const double h = degToRad(0.5);
+  const double step = s.elevation_step_rad;
+  for (const double deg : {0.0, 10.0, -10.0, 20.0, -25.0, 30.0}) {
+    const double c = degToRad(deg);
+    const double measured = bandResponse(sonar, s, c - h, c + h);
+    const double expected = integral(weight, c - h, c + h);
+    EXPECT_NEAR(measured, expected, bandEdgeError(weight, c - h, c + h, step)) << deg;
+  }
+  // Its -3 dB points at +-aperture/2, and -12 dB at twice that.
+  const double on_axis = bandResponse(sonar, s, -h, h);
+  EXPECT_NEAR(
+      10 * std::log10(bandResponse(sonar, s, 0.5 * aperture - h, 0.5 * aperture + h) / on_axis),
+      -3.0 + 10 * std::log10(std::cos(0.5 * aperture)), 0.05);
+  EXPECT_NEAR(10 * std::log10(bandResponse(sonar, s, aperture - h, aperture + h) / on_axis),
+              -12.0 + 10 * std::log10(std::cos(aperture)), 0.1);
 }
 
 TEST(SimBeam, SpreadingLossAndGainScaleReturnsWithRange) {

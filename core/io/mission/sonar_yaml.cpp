@@ -167,8 +167,7 @@ void emitSonar(YAML::Emitter& out, const SonarModel& sonar) {
   }
   out << YAML::Key << "vertical_aperture_deg" << YAML::Value
       << shortestDegrees(sonar.verticalAperture());
-  out << YAML::Key << "beam_pattern" << YAML::Value
-      << (sonar.elevationBeam() == ElevationBeam::Clipped ? "clipped" : "sinc");
+  out << YAML::Key << "beam_pattern" << YAML::Value << elevationBeamName(sonar.elevationBeam());
   if (sonar.horizontalBeamWidth() > 0.0) {  // not given: left out
     out << YAML::Key << "horizontal_beam_width_deg" << YAML::Value
         << shortestDegrees(sonar.horizontalBeamWidth());
