@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/param_flags.h"
 #include "cli/source_flags.h"
 #include "common/error.h"
 #include "denoise/detector.h"
@@ -50,9 +51,12 @@ void addFrameCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--noise-model", o->noise_model, "Noise model for --detected");
   cmd->add_option("--detected", o->detected,
                   "Write the polar image after the Z-test (PNG, same intensity window)");
-  cmd->add_option("--z", o->z, "Z-test threshold for --detected")->capture_default_str();
+  cmd->add_option("--z", o->z, "Z-test threshold for --detected")
+      ->capture_default_str()
+      ->check(schemaCheck("detector.z"));
   cmd->add_option("--smoothing", o->smoothing, "Detector's box filter for --detected")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(schemaCheck("detector.smoothing"));
   cmd->add_option("--low", o->low, "Intensity shown black (default: 1st percentile)");
   cmd->add_option("--high", o->high, "Intensity shown white (default: 99.5th percentile)");
   cmd->callback([o, source, &exit_code] {

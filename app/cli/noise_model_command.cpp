@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "cli/commands.h"
+#include "cli/param_flags.h"
 #include "cli/terminal_progress.h"
 #include "denoise/detector.h"
 #include "denoise/mission_noise_model.h"
@@ -30,7 +31,8 @@ void addNoiseModelCommand(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", o->out, "Noise model file to write (YAML)")->required();
   cmd->add_option("--smoothing", o->smoothing,
                   "Box filter side applied to frames first (odd; match the detector's)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(schemaCheck("detector.smoothing"));
   cmd->add_flag("--from-mission", o->from_mission,
                 "Learn from a mission with structure, as reconstruct does without a noise model "
                 "(returns from structure left out; docs/denoising.md)");

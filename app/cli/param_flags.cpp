@@ -1,6 +1,7 @@
 #include "cli/param_flags.h"
 
 #include <cctype>
+#include <stdexcept>
 
 #include "common/error.h"
 #include "pipeline/param_schema.h"
@@ -82,6 +83,15 @@ void applyParamFlags(const ParamFlags& flags, ReconstructionParams& params) {
     }
     spec.set(params, parsed.value);
   }
+}
+
+CLI::Validator schemaCheck(std::string_view key) {
+  const ParamSpec* spec = findParam(key);
+  if (spec == nullptr) {
+    throw std::logic_error("no parameter " + std::string(key) + " in the schema");
+  }
+  return CLI::Validator([spec](const std::string& text) { return parseParam(*spec, text).problem; },
+                        "");
 }
 
 }  // namespace sonarcarve::cli

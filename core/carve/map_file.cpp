@@ -9,6 +9,7 @@
 
 #include "common/available_memory.h"
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/atomic_file.h"
 #include "io/files/input_file.h"
 
@@ -161,7 +162,8 @@ void saveMap(const VoxelMap& map, const std::filesystem::path& path) {
 }
 
 std::unique_ptr<VoxelMap> loadMap(const std::filesystem::path& path) {
-  MapReader r(readInputFile(path, "SonarCarve map file (.scmap)"), path.string());
+  MapReader r(readInputFile(path, "a SonarCarve map file (.scmap)", kMaxMapFileBytes),
+              path.string());
   if (r.left() == 0) {
     r.fail(0, "the file is empty; expected a SonarCarve map file (.scmap)");
   }

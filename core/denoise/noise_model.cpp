@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/atomic_file.h"
 #include "io/files/input_file.h"
 
@@ -147,7 +148,7 @@ std::string openCvReason(const cv::Exception& e) {
 
 NoiseModel NoiseModel::load(const std::filesystem::path& path) {
   const std::string file = path.string();
-  requireRegularFile(path, "a noise model (sonarcarve-cli noise-model)");
+  requireInputSize(path, "a noise model (sonarcarve-cli noise-model)", kMaxNoiseModelFileBytes);
   NoiseModel model;
   try {
     cv::FileStorage fs(file, cv::FileStorage::READ);

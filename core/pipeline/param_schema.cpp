@@ -91,6 +91,14 @@ constexpr ParamRange kAny{};
 constexpr ParamRange kPositive{.min = 0.0, .min_open = true};
 constexpr ParamRange kNonNegative{.min = 0.0};
 constexpr ParamRange kAtLeastOne{.min = 1.0};
+// Upper ends of entries whose value sets the work or the memory of a run: each is well above
+// what any run needs (and above the panel's own bounds), and below what makes a run take
+// minutes or gigabytes (docs/reliability.md, "Limits"). Windows along a beam span at most the
+// longest beam.
+constexpr double kMaxSmoothingWindow = 255;       // a box of 255 x 255 pixels
+constexpr double kMaxCfarWindow = 16384;          // kMaxRangeBins
+constexpr double kMaxMeshSmoothingPasses = 1000;  // 1e8 ran past 60 s and took 2.4 GB
+constexpr double kMaxOccupancySigma = 100;        // voxels: the grid's border is 2 sigma
 
 // Designated initializers leave the fields they do not name at their defaults on purpose; GCC
 // 12 warns about each of them under -Wextra.
@@ -134,7 +142,7 @@ std::vector<ParamSpec> makeSchema() {
       {.key = "detector.smoothing",
        .unit = "pixels",
        .odd = true,
-       .range = kAtLeastOne,
+       .range = {.min = 1.0, .max = kMaxSmoothingWindow},
        .help = "side of the box filter averaged before the test (1 = none); the noise model "
                "must be learned with the same",
        .flag = "--smoothing",
@@ -152,7 +160,7 @@ std::vector<ParamSpec> makeSchema() {
        .access = field([](auto& p) -> auto& { return p.noise_model; })},
       {.key = "detector.cfar_guard",
        .unit = "range bins",
-       .range = kNonNegative,
+       .range = {.min = 0.0, .max = kMaxCfarWindow},
        .help = "CFAR: cells skipped on each side of the cell under test",
        .flag = "--cfar-guard",
        .gui = {.group = "Denoising", .label = "CFAR guard", .advanced = true, .max = 100},
@@ -160,7 +168,7 @@ std::vector<ParamSpec> makeSchema() {
        .applies = usesCfar},
       {.key = "detector.cfar_train",
        .unit = "range bins",
-       .range = kAtLeastOne,
+       .range = {.min = 1.0, .max = kMaxCfarWindow},
        .help = "CFAR: cells averaged on each side beyond the guard",
        .flag = "--cfar-train",
        .gui =
@@ -528,7 +536,7 @@ std::vector<ParamSpec> makeSchema() {
        .applies = buildsMesh},
       {.key = "mesh.occupancy_sigma_voxels",
        .unit = "voxels",
-       .range = kPositive,
+       .range = {.min = 0.0, .max = kMaxOccupancySigma, .min_open = true},
        .help = "occupancy: Gaussian smoothing of the voxels",
        .flag = "--mesh-occupancy-sigma",
        .gui = {.group = "Mesh",
@@ -565,7 +573,7 @@ std::vector<ParamSpec> makeSchema() {
        .access = field([](auto& p) -> auto& { return p.mesh.max_distance_voxels; }),
        .applies = meshesImplicit},
       {.key = "mesh.smoothing_iterations",
-       .range = kNonNegative,
+       .range = {.min = 0.0, .max = kMaxMeshSmoothingPasses},
        .help = "windowed-sinc smoothing passes; 0 = none",
        .flag = "--mesh-smoothing",
        .gui = {.group = "Mesh", .label = "Smoothing passes", .advanced = true, .max = 500},

@@ -285,6 +285,19 @@ def db3_bag(compress_messages=False):
         return path.read_bytes()
 
 
+def png_chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+
+def inflation_bomb_png(rows=32, cols=32, inflated_mib=8):
+    """A 16-bit grey PNG declaring rows x cols whose image data inflates to far more (zeros):
+    the class of file that made every read inflate 12 GB (issue 44)."""
+    idat = zlib.compress(bytes(inflated_mib << 20), 9)
+    ihdr = struct.pack(">IIBBBBB", cols, rows, 16, 0, 0, 0, 0)
+    return (b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", ihdr) + png_chunk(b"IDAT", idat)
+            + png_chunk(b"IEND", b""))
+
+
 def main():
     write("oculus", "v0_8bit", oculus_ping(0, 16, 10))
     write("oculus", "v2_16bit_gain", oculus_ping(2, 8, 4, sixteen=True, gain=True))
@@ -298,6 +311,7 @@ def main():
     write("mission", "example",
           b"\0".join((example / f).read_bytes() for f in ("mission.yaml", "nav.csv", "frames.csv")))
     write("frame_png", "example_frame.png", (example / "frames" / "000000.png").read_bytes())
+    write("frame_png", "inflation_bomb.png", inflation_bomb_png())
     write("ply", "ascii.ply",
           "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
           "property float z\nproperty float intensity\nelement face 1\n"

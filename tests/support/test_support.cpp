@@ -1,5 +1,7 @@
 #include "support/test_support.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -92,6 +94,11 @@ std::string readText(const std::filesystem::path& path) {
 void writeText(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
+}
+
+void writeSparseFile(const std::filesystem::path& path, std::uint64_t bytes) {
+  writeText(path, "");
+  ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(bytes)), 0) << path;
 }
 
 std::vector<Eigen::Vector3d> readAsciiPlyPoints(const std::filesystem::path& path,

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -66,6 +67,8 @@ void expectError(Run run, const std::vector<std::string>& fragments) {
   }
 }
 void writeText(const std::filesystem::path& path, const std::string& text);
+/// A file of `bytes` that takes no disk (sparse, all zeros); fails the test if it cannot be.
+void writeSparseFile(const std::filesystem::path& path, std::uint64_t bytes);
 /// The x, y, z of an ASCII PLY's vertices, in double (a float reader would lose the metres'
 /// decimals at 5e6 m); its header lines before end_header into `header` when given.
 std::vector<Eigen::Vector3d> readAsciiPlyPoints(const std::filesystem::path& path,

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/atomic_file.h"
 #include "io/files/input_file.h"
 #include "io/files/output_folder.h"
@@ -29,21 +30,37 @@ TEST(InputFile, RefusesWhatIsNotARegularFile) {
   ScratchDir dir;
   const auto fifo = dir.path() / "nav.csv";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  expectError([&] { readInputFile(fifo, "a CSV table"); },
+  expectError([&] { readInputFile(fifo, "a CSV table", 1000); },
               {"nav.csv: is a FIFO (named pipe): expected a regular file (a CSV table)"});
-  expectError([&] { readInputFile(dir.path(), "a frame"); },
+  expectError([&] { readInputFile(dir.path(), "a frame", 1000); },
               {dir.path().string() + ": is a directory: expected a regular file (a frame)"});
   expectError([&] { requireRegularFile("/dev/zero", "a mesh"); },
               {"/dev/zero: is a device: expected a regular file (a mesh)"});
-  expectError([&] { readInputFile(dir.path() / "missing.yaml", "a YAML file"); },
+  expectError([&] { readInputFile(dir.path() / "missing.yaml", "a YAML file", 1000); },
               {"missing.yaml: not found: expected a YAML file"});
+}
+
+TEST(InputFile, AFileOverItsFormatsBoundIsRefusedBeforeItIsRead) {
+  ScratchDir dir;
+  const auto nav = dir.path() / "nav.csv";
+  test::writeSparseFile(nav, std::uint64_t{20} << 30);
+  const auto start = std::chrono::steady_clock::now();
+  expectError([&] { readInputFile(nav, "a CSV table", kMaxTableFileBytes); },
+              {"nav.csv: is 21474836480 bytes, more than the 2147483648 bytes a CSV table may "
+               "have"});
+  expectError([&] { requireInputSize(nav, "a noise model", kMaxNoiseModelFileBytes); },
+              {"nav.csv: is 21474836480 bytes, more than the 1073741824 bytes a noise model"});
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  test::writeText(nav, "time_s\n1\n");
+  expectError([&] { readInputFile(nav, "a CSV table", 5); }, {"is 9 bytes, more than the 5"});
+  EXPECT_EQ(readInputFile(nav, "a CSV table", 9), "time_s\n1\n");
 }
 
 TEST(InputFile, ReadsAWholeFileAndSkipsAByteOrderMark) {
   ScratchDir dir;
   const std::string text = "\xEF\xBB\xBFtime_s,north_m\n1,2\n";
   test::writeText(dir.path() / "nav.csv", text);
-  EXPECT_EQ(readInputFile(dir.path() / "nav.csv", "a CSV table"), text);
+  EXPECT_EQ(readInputFile(dir.path() / "nav.csv", "a CSV table", 1000), text);
   EXPECT_EQ(withoutByteOrderMark(text), "time_s,north_m\n1,2\n");
   EXPECT_EQ(withoutByteOrderMark("time_s"), "time_s");
   EXPECT_EQ(withoutByteOrderMark("\xEF\xBB"), "\xEF\xBB");

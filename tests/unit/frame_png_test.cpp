@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include "common/error.h"
 #include "io/files/atomic_file.h"
 #include "io/files/frame_png.h"
+#include "support/png_bombs.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {
@@ -67,6 +70,43 @@ TEST(FramePng, TruncatedEmptyCorruptAndMissingFilesGetClearErrors) {
   }
   expectError(flipped, "corrupt PNG");
   EXPECT_THROW(readFramePng(dir.path() / "missing.png"), Error);
+}
+
+TEST(FramePng, AnotherSizeThanTheSonarsIsRefusedBeforeDecoding) {
+  ScratchDir dir;
+  writeFileAtomically(dir.path() / "f.png", encodeFramePng(rampImage(100, 64), "f"));
+  test::expectError(
+      [&] {
+        readFramePng(dir.path() / "f.png", FrameShape{200, 64});
+      },
+      {"f.png: byte 16: image is 100 x 64 (rows x cols), expected 200 range bins x "
+       "64 beams"});
+  EXPECT_EQ(readFramePng(dir.path() / "f.png", FrameShape{100, 64}).rows, 100);
+}
+
+TEST(FramePng, AFileLargerThanItsFrameCanBeIsRefusedUnread) {
+  ScratchDir dir;
+  const auto path = dir.path() / "f.png";
+  test::writeSparseFile(path, std::uint64_t{20} << 30);
+  const auto start = std::chrono::steady_clock::now();
+  test::expectError(
+      [&] {
+        readFramePng(path, FrameShape{200, 64});
+      },
+      {"f.png: is 21474836480 bytes, more than the 1100176 bytes"});
+  test::expectError([&] { readFramePng(path); }, {"f.png: is 21474836480 bytes"});
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+}
+
+TEST(FramePng, AnInflationBombOfTheRightSizeIsRefused) {
+  ScratchDir dir;
+  // 600 MiB of image data in 0.6 MB, under the 2.3 MB a 650 x 500 frame may take.
+  writeFileAtomically(dir.path() / "f.png", test::inflationBombPng(650, 500, 600));
+  test::expectError(
+      [&] {
+        readFramePng(dir.path() / "f.png", FrameShape{650, 500});
+      },
+      {"f.png", "goes on past the 650650 bytes"});
 }
 
 TEST(AtomicFile, AFailedWriteLeavesThePreviousContentAndNoTemporaryFile) {

@@ -162,7 +162,14 @@ TEST_F(ParamsYamlErrors, OutOfRangeValues) {
   EXPECT_EQ(errorOf("frames: {stride: 0}\n"),
             at(1, "frames.stride") + "expected a whole number, at least 1, got 0");
   EXPECT_EQ(errorOf("detector: {smoothing: 4}\n"),
-            at(1, "detector.smoothing") + "expected an odd whole number, at least 1, got 4");
+            at(1, "detector.smoothing") + "expected an odd whole number, from 1 to 255, got 4");
+  // Parameters that set a run's work have an upper end (issue 44).
+  EXPECT_EQ(errorOf("mesh: {smoothing_iterations: 100000000}\n"),
+            at(1, "mesh.smoothing_iterations") +
+                "expected a whole number, from 0 to 1000, got 100000000");
+  EXPECT_EQ(errorOf("mesh: {occupancy_sigma_voxels: 1e6}\n"),
+            at(1, "mesh.occupancy_sigma_voxels") +
+                "expected a number, above 0 and at most 100, got 1e+06");
   EXPECT_EQ(
       errorOf("vertical_aperture_deg: 200\n"),
       at(1, "vertical_aperture_deg") + "expected a number, at least 0 and below 180, got 200");

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/input_file.h"
 
 namespace sonarcarve {
@@ -35,7 +36,7 @@ std::vector<std::string> splitCells(const std::string& line, char delimiter) {
 }  // namespace
 
 CsvTable CsvTable::read(const std::filesystem::path& path, const CsvOptions& options) {
-  return parse(readInputFile(path, "a CSV table"), path.string(), options);
+  return parse(readInputFile(path, "a CSV table", kMaxTableFileBytes), path.string(), options);
 }
 
 CsvTable CsvTable::parse(std::string_view text, std::string file, const CsvOptions& options) {

@@ -21,7 +21,8 @@ std::uint32_t bigEndian32(const std::vector<unsigned char>& bytes, std::size_t a
 }
 
 // The image size from the IHDR chunk (bytes 16 to 23), checked before the decoder allocates.
-void requireFrameSize(const std::vector<unsigned char>& bytes, const std::string& file) {
+void requireFrameSize(const std::vector<unsigned char>& bytes, const std::string& file,
+                      const std::optional<FrameShape>& expected) {
   constexpr std::size_t kIhdrEnd = 24;
   if (bytes.size() < kIhdrEnd || std::string(bytes.begin() + 12, bytes.begin() + 16) != "IHDR") {
     throw Error(file, "byte 12", "corrupt PNG: expected the IHDR chunk first");
@@ -36,6 +37,14 @@ void requireFrameSize(const std::vector<unsigned char>& bytes, const std::string
                     " (rows x cols): expected at most " + std::to_string(kMaxRangeBins) +
                     " range bins x " + std::to_string(kMaxBeams) + " beams and " +
                     std::to_string(kMaxFramePixels) + " pixels");
+  }
+  if (expected && (height != static_cast<std::uint32_t>(expected->rows) ||
+                   width != static_cast<std::uint32_t>(expected->cols))) {
+    throw Error(file, "byte 16",
+                "image is " + std::to_string(height) + " x " + std::to_string(width) +
+                    " (rows x cols), expected " + std::to_string(expected->rows) +
+                    " range bins x " + std::to_string(expected->cols) +
+                    " beams (the sonar's): not decoded");
   }
 }
 
@@ -65,9 +74,11 @@ std::string encodeFramePng(const cv::Mat& image, const std::string& what) {
   return encodePng(wholeCounts(image, what), what);
 }
 
-cv::Mat readFramePng(const std::filesystem::path& path) {
+cv::Mat readFramePng(const std::filesystem::path& path, std::optional<FrameShape> expected) {
   const std::string file = path.string();
-  const std::string content = readInputFile(path, "a 16-bit PNG frame image");
+  const std::uint64_t max_bytes = expected ? maxFramePngBytes(expected->rows, expected->cols)
+                                           : maxFramePngBytes(kMaxRangeBins, kMaxBeams);
+  const std::string content = readInputFile(path, "a 16-bit PNG frame image", max_bytes);
   const std::vector<unsigned char> bytes(content.begin(), content.end());
   if (bytes.empty()) {
     throw Error(file, "byte 0", "empty file: expected a PNG image");
@@ -81,7 +92,7 @@ cv::Mat readFramePng(const std::filesystem::path& path) {
     throw Error(file, bytePlace(bytes.size()),
                 "truncated PNG: expected the IEND chunk at the end of the file");
   }
-  requireFrameSize(bytes, file);
+  requireFrameSize(bytes, file, expected);
   const cv::Mat decoded = decodeGreyPng(content, file);
   cv::Mat image;
   decoded.convertTo(image, CV_32F);

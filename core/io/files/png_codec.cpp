@@ -3,6 +3,8 @@
 #include <png.h>
 #include <zlib.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -19,10 +21,13 @@ struct PngCall {
   png_structp png = nullptr;
   png_infop info = nullptr;
   char error[200] = "";
+  bool too_much_data = false;  ///< libpng warned of image data past the last row
   // Reading: the bytes and how far they are read. Writing: where the bytes go.
   const unsigned char* in = nullptr;
   std::size_t in_size = 0;
   std::size_t in_at = 0;
+  // Reading stops with an error past this byte: set when the last row is read.
+  std::size_t in_end = SIZE_MAX;
   std::string* out = nullptr;
 };
 
@@ -32,12 +37,21 @@ void onError(png_structp png, png_const_charp message) {
   png_longjmp(png, 1);
 }
 
-void onWarning(png_structp, png_const_charp) {}
+void onWarning(png_structp png, png_const_charp message) {
+  if (std::strstr(message, "Too much image data") != nullptr ||
+      std::strstr(message, "Extra compressed data") != nullptr) {
+    static_cast<PngCall*>(png_get_error_ptr(png))->too_much_data = true;
+  }
+}
 
 void readBytes(png_structp png, png_bytep out, png_size_t n) {
   auto* call = static_cast<PngCall*>(png_get_io_ptr(png));
   if (n > call->in_size - call->in_at) {
     png_error(png, "the file ends inside the image");
+  }
+  if (n > call->in_end - std::min(call->in_at, call->in_end)) {
+    call->too_much_data = true;
+    png_error(png, "image data past the size declared");
   }
   std::memcpy(out, call->in + call->in_at, n);
   call->in_at += n;
@@ -51,7 +65,8 @@ void flush(png_structp) {}
 
 struct Header {
   png_uint_32 width = 0, height = 0;
-  int bit_depth = 0, colour = 0;
+  int bit_depth = 0, colour = 0, interlace = PNG_INTERLACE_NONE;
+  int passes = 1;
 };
 
 bool readHeader(PngCall& call, Header& header) {
@@ -61,7 +76,7 @@ bool readHeader(PngCall& call, Header& header) {
   png_set_read_fn(call.png, &call, readBytes);
   png_read_info(call.png, call.info);
   png_get_IHDR(call.png, call.info, &header.width, &header.height, &header.bit_depth,
-               &header.colour, nullptr, nullptr, nullptr);
+               &header.colour, &header.interlace, nullptr, nullptr);
   if (header.colour != PNG_COLOR_TYPE_GRAY) {
     return true;  // the caller refuses it
   }
@@ -71,16 +86,34 @@ bool readHeader(PngCall& call, Header& header) {
   if (header.bit_depth == 16) {
     png_set_swap(call.png);  // PNG is big-endian
   }
-  png_set_interlace_handling(call.png);
+  header.passes = png_set_interlace_handling(call.png);
   png_read_update_info(call.png, call.info);
   return true;
 }
 
-bool readRows(PngCall& call, png_bytepp rows) {
+// Reads the rows as png_read_image does. After the last row libpng inflates the rest of the
+// stream to its end before it says there was too much (a 12.5 MB file declaring 650 x 500
+// pixels inflated 12 GB on every read), so the input of the last row is limited to what a row
+// and a stream's end can take: `last_row_input`.
+bool readRows(PngCall& call, const Header& header, png_bytepp rows, std::size_t last_row_input) {
   if (setjmp(png_jmpbuf(call.png))) {
     return false;
   }
-  png_read_image(call.png, rows);
+  for (int pass = 0; pass < header.passes; ++pass) {
+    for (png_uint_32 y = 0; y < header.height; ++y) {
+      if (pass == header.passes - 1 && y == header.height - 1) {
+        call.in_end = call.in_at + last_row_input;
+      }
+      png_read_row(call.png, rows[y], nullptr);
+    }
+  }
+  return true;
+}
+
+bool readEnd(PngCall& call) {
+  if (setjmp(png_jmpbuf(call.png))) {
+    return false;
+  }
   png_read_end(call.png, nullptr);
   return true;
 }
@@ -110,6 +143,42 @@ bool writeImage(PngCall& call, const Header& header, png_bytepp rows, bool bgr) 
   png_write_image(call.png, rows);
   png_write_end(call.png, nullptr);
   return true;
+}
+
+// The bytes the image data of a grey PNG inflates to: each row of each pass is a filter byte
+// and its pixels.
+std::uint64_t inflatedGreyBytes(const Header& header) {
+  const auto rowBytes = [&](std::uint64_t cols) {
+    return 1 + (cols * static_cast<std::uint64_t>(header.bit_depth) + 7) / 8;
+  };
+  if (header.interlace == PNG_INTERLACE_NONE) {
+    return std::uint64_t{header.height} * rowBytes(header.width);
+  }
+  std::uint64_t bytes = 0;
+  for (int pass = 0; pass < 7; ++pass) {
+    const std::uint64_t cols = PNG_PASS_COLS(header.width, pass);
+    const std::uint64_t rows = PNG_PASS_ROWS(header.height, pass);
+    if (cols > 0 && rows > 0) {
+      bytes += rows * rowBytes(cols);
+    }
+  }
+  return bytes;
+}
+
+// The input the last row may take: its bytes, twice over (a literal's code can be 15 bits),
+// libpng's buffer of 8 KiB, and 64 KiB for the stream's end (the end of its last block and its
+// checksum, a few bytes; empty blocks of 5 bytes from encoders that flush often) and the chunk
+// headers between. It inflates to 75 MB at most.
+std::size_t lastRowInput(const Header& header) {
+  const std::size_t row = 1 + (std::size_t{header.width} * header.bit_depth + 7) / 8;
+  return 2 * row + (std::size_t{72} << 10);
+}
+
+std::string tooMuchData(const Header& header) {
+  return "corrupt PNG: its image data goes on past the " +
+         std::to_string(inflatedGreyBytes(header)) + " bytes of the " +
+         std::to_string(header.height) + " x " + std::to_string(header.width) +
+         " pixels it declares (rows x cols): not decoded further";
 }
 
 std::vector<png_bytep> rowsOf(const cv::Mat& image) {
@@ -179,9 +248,21 @@ cv::Mat decodeGreyPng(const std::string& bytes, const std::string& file) {
   cv::Mat image(static_cast<int>(header.height), static_cast<int>(header.width),
                 header.bit_depth == 16 ? CV_16UC1 : CV_8UC1);
   std::vector<png_bytep> rows = rowsOf(image);
-  if (!readRows(call, rows.data())) {
+  const bool read = readRows(call, header, rows.data(), lastRowInput(header));
+  if (call.too_much_data) {
+    throw Error(file, "byte " + std::to_string(call.in_at), tooMuchData(header));
+  }
+  if (!read) {
     throw Error(file, "byte " + std::to_string(call.in_at),
                 std::string("corrupt PNG: ") + call.error);
+  }
+  call.in_end = SIZE_MAX;
+  if (!readEnd(call)) {
+    throw Error(file, "byte " + std::to_string(call.in_at),
+                std::string("corrupt PNG: ") + call.error);
+  }
+  if (call.too_much_data) {
+    throw Error(file, "byte " + std::to_string(call.in_at), tooMuchData(header));
   }
   return image;
 }

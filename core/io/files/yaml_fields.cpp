@@ -5,12 +5,13 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/input_file.h"
 
 namespace sonarcarve {
 
 YAML::Node YamlFields::load() const {
-  return parse(readInputFile(file_, "a YAML file"));
+  return parse(readInputFile(file_, "a YAML file", kMaxYamlFileBytes));
 }
 
 YAML::Node YamlFields::parse(const std::string& text) const {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/finite_points.h"
 #include "io/files/input_file.h"
 
@@ -34,7 +35,8 @@ long long resolved(long long written, std::size_t vertices) {
 
 ObjMesh readObjMesh(const std::filesystem::path& path, const Eigen::Vector3d& origin_ned_m) {
   const std::string file = path.string();
-  std::istringstream text(std::string(withoutByteOrderMark(readInputFile(path, "an OBJ mesh"))));
+  std::istringstream text(
+      std::string(withoutByteOrderMark(readInputFile(path, "an OBJ mesh", kMaxMeshFileBytes))));
   ObjMesh mesh;
   std::vector<Face> faces;
   int line_number = 0;

@@ -88,14 +88,7 @@ class MissionFolderSource final : public FrameSource {
           path.string(), "frame " + std::to_string(index),
           "sonar id '" + record.sonar_id + "' is not the mission's sonar '" + sonar_.id() + "'");
     }
-    frame.image = readFramePng(path);
-    if (frame.image.rows != sonar_.rows() || frame.image.cols != sonar_.cols()) {
-      throw Error(path.string(), "frame " + std::to_string(index),
-                  "image is " + std::to_string(frame.image.rows) + " x " +
-                      std::to_string(frame.image.cols) + " (rows x cols), expected " +
-                      std::to_string(sonar_.rows()) + " range bins x " +
-                      std::to_string(sonar_.cols()) + " beams");
-    }
+    frame.image = readFramePng(path, FrameShape{sonar_.rows(), sonar_.cols()});
     return frame;
   }
 

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/input_file.h"
 #include "io/rosbag/mcap_format.h"
 
@@ -123,6 +124,9 @@ class FolderBag final : public RosBag {
 std::vector<std::filesystem::path> folderFiles(const std::filesystem::path& folder) {
   const std::filesystem::path metadata = folder / kBagMetadata;
   std::vector<std::filesystem::path> files;
+  if (std::error_code ec; std::filesystem::exists(metadata, ec)) {
+    requireInputSize(metadata, "rosbag2's metadata.yaml", kMaxYamlFileBytes);
+  }
   try {
     const YAML::Node root = YAML::LoadFile(metadata.string());
     const YAML::Node paths = root["rosbag2_bagfile_information"]["relative_file_paths"];

@@ -6,7 +6,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/atomic_file.h"
+#include "io/files/input_file.h"
 
 namespace sonarcarve {
 namespace {
@@ -49,10 +52,12 @@ nlohmann::json readManifest(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     return nlohmann::json::value_t::discarded;
   }
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return nlohmann::json::parse(text.str(), nullptr, false);
+  try {
+    return nlohmann::json::parse(readInputFile(path, "a run manifest", kMaxRecordFileBytes),
+                                 nullptr, false);
+  } catch (const Error&) {
+    return nlohmann::json::value_t::discarded;
+  }
 }
 
 }  // namespace

@@ -67,6 +67,7 @@ std::vector<CatalogueCase> oculusCases();
 std::vector<CatalogueCase> readerCases();
 std::vector<CatalogueCase> bagCases();
 std::vector<CatalogueCase> geoCases();
+std::vector<CatalogueCase> boundCases();
 
 // Inputs for the cases.
 inline constexpr const char* kPreviousContent = "a file of an earlier run\n";

@@ -23,6 +23,7 @@ INSTANTIATE_TEST_SUITE_P(Oculus, Catalogue, ::testing::ValuesIn(oculusCases()), 
 INSTANTIATE_TEST_SUITE_P(Readers, Catalogue, ::testing::ValuesIn(readerCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Bags, Catalogue, ::testing::ValuesIn(bagCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Geo, Catalogue, ::testing::ValuesIn(geoCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Bounds, Catalogue, ::testing::ValuesIn(boundCases()), nameOf);
 
 }  // namespace
 }  // namespace sonarcarve::test
