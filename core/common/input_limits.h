@@ -22,13 +22,15 @@ inline constexpr std::uint64_t kMaxBagChunkBytes = std::uint64_t{256} << 20;
 /// parameters, a bag's metadata), 16 MiB (real ones are below 100 KiB, an explicit bearing
 /// table included); a mesh read as text (OBJ), 4 GiB; a map file, 16 GiB (4 billion voxels as
 /// 4-byte values); a noise model (YAML text of two numbers a pixel of the largest frame), 1 GiB;
-/// a run's own JSON records (manifest), 64 MiB.
+/// a run's own JSON records (manifest), 64 MiB; a simulator's elevation beam table, 16 MiB
+/// (a row a millidegree over +-90 degrees takes 4 MB).
 inline constexpr std::uint64_t kMaxTableFileBytes = std::uint64_t{2} << 30;
 inline constexpr std::uint64_t kMaxYamlFileBytes = std::uint64_t{16} << 20;
 inline constexpr std::uint64_t kMaxMeshFileBytes = std::uint64_t{4} << 30;
 inline constexpr std::uint64_t kMaxMapFileBytes = std::uint64_t{16} << 30;
 inline constexpr std::uint64_t kMaxNoiseModelFileBytes = std::uint64_t{1} << 30;
 inline constexpr std::uint64_t kMaxRecordFileBytes = std::uint64_t{64} << 20;
+inline constexpr std::uint64_t kMaxBeamTableFileBytes = std::uint64_t{16} << 20;
 /// Bytes of a PNG frame of rows x cols 16-bit pixels: a PNG that does not compress at all holds
 /// its pixels, a filter byte a row and a few bytes a chunk; twice its pixel bytes plus 1 MiB is
 /// far above any frame a PNG encoder writes.

@@ -6,6 +6,7 @@
 
 #include "common/angles.h"
 #include "common/error.h"
+#include "common/input_limits.h"
 #include "io/files/csv_table.h"
 #include "io/files/input_file.h"
 #include "sonar/beam_pattern.h"
@@ -95,7 +96,8 @@ ElevationBeamSpec elevationBeamSpec(const std::string& text) {
 }
 
 std::vector<ElevationTableRow> readElevationTable(const std::filesystem::path& path) {
-  return parseElevationTable(readInputFile(path, "an elevation beam table"), path.string());
+  return parseElevationTable(readInputFile(path, "an elevation beam table", kMaxBeamTableFileBytes),
+                             path.string());
 }
 
 std::vector<ElevationTableRow> parseElevationTable(std::string_view text, const std::string& file) {
