@@ -69,6 +69,12 @@ ForwardModel::ForwardModel(const SonarModel& sonar, ModelSettings settings, Thre
   }
 }
 
+int ForwardModel::tracedBeams() const {
+  const int stride = settings_.beam_stride;
+  const int first = settings_.beam_offset;
+  return first < sonar_.cols() ? (sonar_.cols() - first + stride - 1) / stride : 0;
+}
+
 template <typename RayBody>
 void ForwardModel::forEachRay(const BlockGrid& grid, const FrameView& view,
                               const RayBody& body) const {
@@ -84,7 +90,7 @@ void ForwardModel::forEachRay(const BlockGrid& grid, const FrameView& view,
   Slots slots(pool_.size());
   const int stride = settings_.beam_stride;
   const int first = settings_.beam_offset;
-  const int traced = first < sonar_.cols() ? (sonar_.cols() - first + stride - 1) / stride : 0;
+  const int traced = tracedBeams();
   pool_.parallelFor(static_cast<std::size_t>(traced), 4, [&](std::size_t begin, std::size_t end) {
     const unsigned slot = slots.take();
     StencilReader reader(grid, &active);
@@ -302,7 +308,7 @@ ModelGradient ForwardModel::gradient(const BlockGrid& grid, const FrameView& vie
 void ForwardModel::trace(const BlockGrid& grid, const FrameView& view, FrameTrace& trace) const {
   const int stride = settings_.beam_stride;
   const int first = settings_.beam_offset;
-  const int traced = first < sonar_.cols() ? (sonar_.cols() - first + stride - 1) / stride : 0;
+  const int traced = tracedBeams();
   trace.beams_.resize(static_cast<std::size_t>(traced));
   for (FrameTrace::Beam& beam : trace.beams_) {
     beam.rays.clear();

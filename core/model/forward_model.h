@@ -108,6 +108,8 @@ class ForwardModel {
   const ModelSettings& settings() const { return settings_; }
 
  private:
+  /// How many beams the settings' stride and offset trace.
+  int tracedBeams() const;
   template <typename RayBody>
   void forEachRay(const BlockGrid& grid, const FrameView& view, const RayBody& body) const;
   template <typename RayBody>

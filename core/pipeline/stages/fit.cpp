@@ -3,6 +3,7 @@
 // (fit.enabled), after the surface stage and before the mesh.
 #include <cstdio>
 
+#include "common/angles.h"
 #include "fit/fitted_surface.h"
 #include "fit/initial_grid.h"
 #include "fit/map_fit.h"
@@ -57,7 +58,7 @@ RunChoice fitChoice(const MapFitSummary& summary, std::size_t carved_points,
 
 std::string degrees(double radians) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.1f deg", radians * 180.0 / 3.14159265358979323846);
+  std::snprintf(text, sizeof text, "%.1f deg", radToDeg(radians));
   return text;
 }
 
@@ -76,8 +77,8 @@ RunChoice beamChoice(const MapFitSummary& summary) {
   for (std::size_t m = 0; m < fitted.knotsDb().size(); ++m) {
     char text[64];
     std::snprintf(text, sizeof text, "%s%.1f: %.1f (%.1f)", m == 0 ? "" : ", ",
-                  fitted.knotAngle(static_cast<int>(m)) * 180.0 / 3.14159265358979323846,
-                  fitted.knotsDb()[m], declared.knotsDb()[m]);
+                  radToDeg(fitted.knotAngle(static_cast<int>(m))), fitted.knotsDb()[m],
+                  declared.knotsDb()[m]);
     knots += text;
   }
   choice.detail = "level in dB at elevations in deg, fitted (declared): " + knots +
