@@ -40,6 +40,18 @@ const std::vector<ValidationMission>& missions() {
        "--scene seabed-objects --noise none"},
       {"riser-no-tails", "riser, beam without tails declared sinc, noise-free",
        "--scene riser --noise none --beam clipped --declared-beam sinc"},
+      {"riser-cut-beam", "riser, beam cut past -6 dB declared sinc, noise-free",
+       "--scene riser --noise none --elevation-beam truncated"},
+      {"riser-gaussian-beam", "riser, gaussian beam declared sinc, noise-free",
+       "--scene riser --noise none --elevation-beam gaussian"},
+      {"riser-orbit-cut-beam", "riser, orbit, beam cut past -6 dB declared sinc, noise-free",
+       "--scene riser --trajectory orbit --noise none --elevation-beam truncated"},
+      {"riser-two-levels", "riser, level orbits at two depths tilted 20 deg down, noise-free",
+       "--scene riser --trajectory orbit --orbit-levels 2 --tilt -20 --noise none"},
+      {"jacket-descents", "jacket node, 4 descents, noise-free",
+       "--scene jacket-node --trajectory descents --noise none"},
+      {"jacket-relief", "jacket node, vertical pass, seabed with 0.3 m relief, noise-free",
+       "--scene jacket-node --noise none --seabed-relief 0.3"},
   };
   return set;
 }

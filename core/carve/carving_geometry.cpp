@@ -1,5 +1,6 @@
 #include "carve/carving_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -28,7 +29,13 @@ CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& par
   cos_half_aperture_ = std::cos(0.5 * sonar.verticalAperture());
   const SincSquaredBeam elevation_beam(sonar.verticalAperture());
   const bool main_lobe = carvesMainLobe(sonar, params);
-  carved_half_elevation_ = main_lobe ? elevation_beam.null(1) : 0.5 * sonar.verticalAperture();
+  carved_half_elevation_ = 0.5 * sonar.verticalAperture();
+  if (main_lobe) {
+    const double reach = sonar.elevationReach();
+    carved_half_elevation_ = reach > 0.0
+                                 ? std::clamp(reach, carved_half_elevation_, elevation_beam.null(1))
+                                 : elevation_beam.null(1);
+  }
   if (carved_half_elevation_ >= 0.5 * std::numbers::pi) {
     throw Error("carving", "vertical aperture",
                 "the beam's main lobe must stay within 90 degrees of its axis");

@@ -32,8 +32,8 @@ class CarvingGeometry {
     }
     return lut_[static_cast<std::size_t>(u)];
   }
-  /// Elevation carved on each side of the axis: the main lobe's first null when beam-aware,
-  /// else aperture/2.
+  /// Elevation carved on each side of the axis: the main lobe's first null when beam-aware (or
+  /// the sonar's elevation reach, when set short of it), else aperture/2.
   double carvedHalfElevation() const { return carved_half_elevation_; }
   /// 1 / p(theta) of the sinc^2 beam for |sin(theta)| = s, s in [0, sin(carvedHalfElevation)]
   /// (beam-aware only); capped at 1e6 near the null.

@@ -68,6 +68,16 @@ class SonarModel {
     other.elevation_beam_ = beam;
     return other;
   }
+  /// How far off the axis the elevation beam is known to carry energy (radians): carving trusts
+  /// a dark pixel out to the smaller of this and the declared beam's first null. 0 (the
+  /// default): the first null. Set by the beam check where the frames show the tails end
+  /// short of it (pipeline/beam_check.h).
+  double elevationReach() const { return elevation_reach_rad_; }
+  SonarModel withElevationReach(double reach_rad) const {
+    SonarModel other = *this;
+    other.elevation_reach_rad_ = reach_rad;
+    return other;
+  }
   /// Full width of each beam across bearing between its -3 dB points (radians), when the
   /// sonar declares it; 0: not given, each beam taken as wide as its spacing. Real beams
   /// are often wider than their spacing (an Oculus M750d: 1 degree, 0.25 apart), which blurs
@@ -100,6 +110,7 @@ class SonarModel {
   BearingTable bearings_;
   BeamPattern beam_pattern_;
   ElevationBeam elevation_beam_ = ElevationBeam::MainLobe;
+  double elevation_reach_rad_ = 0.0;
   double horizontal_beam_width_rad_ = 0.0;
   IntensityScale intensity_scale_;
 };

@@ -6,6 +6,7 @@
 
 #include "pipeline/reconstruction.h"
 #include "sim/demo_scenes.h"
+#include "sim/elevation_pattern.h"
 #include "sim/simulation_run.h"
 #include "support/test_support.h"
 
@@ -19,6 +20,9 @@ class BeamCheck : public ::testing::Test {
     simulate("clipped", test::clippedBeam(), false);
     simulate("realistic", ImagingSettings{}, false);
     simulate("empty", ImagingSettings{}, true);
+    ImagingSettings cut;  // sinc^2 cut to nothing past its -6 dB points; declared sinc^2
+    cut.elevation_beam.family = ElevationFamily::Truncated;
+    simulate("cut", cut, false);
   }
   static void TearDownTestSuite() { delete dir_; }
 
@@ -75,6 +79,28 @@ TEST_F(BeamCheck, ABeamAsDeclaredIsLeftAsDeclared) {
   // Enough views to have checked, not too few to tell.
   EXPECT_EQ(beam->reason.find("too few"), std::string::npos) << beam->detail;
   EXPECT_GT(result.surface.size(), 100u);
+}
+
+TEST_F(BeamCheck, ABeamCutShortOfItsDeclaredNullIsCarvedOutToItsCut) {
+  const Mission cut = mission("cut");
+  ASSERT_EQ(cut.sonar.elevationBeam(), ElevationBeam::MainLobe);  // declared with its tails
+  const ReconstructionResult result = reconstruct(cut);
+  const RunChoice* reach = findChoice(result.choices, "elevation beam reach");
+  ASSERT_NE(reach, nullptr);
+  EXPECT_TRUE(reach->warning) << reach->detail;
+  // The cut lies at 13.6 degrees (sinc^2's -6 dB point for a 20 degree aperture); the reach is
+  // a half-degree band's edge, found up to a view's spacing past the cut (5 cm of descent at
+  // 5 m: 0.6 degree).
+  const double reach_deg = std::stod(reach->value);
+  EXPECT_GE(reach_deg, 13.6 - 0.5) << reach->detail;
+  EXPECT_LE(reach_deg, 13.6 + 0.5 + 0.6) << reach->detail;
+  // Carved as deep as the beam reaches: the surface the matched beam keeps, not an empty map.
+  const ReconstructionResult matched = reconstruct(mission("realistic"));
+  EXPECT_GT(result.surface.size(), matched.surface.size() / 2);
+  EXPECT_EQ(findChoice(result.choices, "surface"), nullptr);
+  const RunChoice* as_declared = findChoice(matched.choices, "elevation beam reach");
+  ASSERT_NE(as_declared, nullptr);
+  EXPECT_FALSE(as_declared->warning) << as_declared->detail;
 }
 
 TEST_F(BeamCheck, ARunThatKeepsNoSurfaceSaysSo) {

@@ -9,14 +9,20 @@
 #include "common/error.h"
 #include "denoise/noise_model.h"
 #include "pipeline/beam_check.h"
+#include "pipeline/beam_reach.h"
+#include "pipeline/keep_level.h"
 #include "pipeline/run_context.h"
 #include "pipeline/stages/standard_stages.h"
 #include "pipeline/surface_stage.h"
+#include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
 namespace {
 
 constexpr std::size_t kCheckFrames = 24;
+// The reach follows this many points of the first surface through this many views.
+constexpr std::size_t kReachPoints = 4000;
+constexpr std::size_t kReachFrames = 48;
 
 // The middle of the mission: every other frame of its middle 2 kCheckFrames, or every frame of
 // a mission shorter than that, at most kCheckFrames of them.
@@ -76,7 +82,70 @@ class BeamCheckStage : public Stage {
     run.choose(beamTailChoice(check));
     if (!check.tails_present) {
       run.sonar = clipped;
+      return;
     }
+    findReach(run, positionsOf(surface.surface), progress);
+  }
+
+ private:
+  // How far off the axis carving goes (pipeline/beam_reach.h): the first surface followed
+  // through up to kReachFrames views spread over the frames that can see it, at the keep level
+  // the choose stage measures. Only where a dark pixel is exact: behind a detector every frame
+  // carves inside the aperture.
+  static void findReach(RunContext& run, const std::vector<Eigen::Vector3f>& points,
+                        Progress& progress) {
+    if (!darkPixelsAreExact(run.noise.detector) || points.empty()) {
+      return;
+    }
+    const std::vector<PosedFrame> views = framesThatMaySee(run, points);
+    CarveParams carve = run.carving.carve;  // as the choose stage will make it
+    carve.dark_pixels = CarveParams::DarkPixels::Exact;
+    carve.dark_pixel_level = run.sonar.intensityScale().darkPower();
+    carve.keep_level =
+        measureKeepLevel(*run.frames, run.posed, carve.dynamic_range_db, progress).level;
+    const double keep = effectiveKeepLevel(carve);
+    const auto image = [&](std::size_t i) -> std::optional<cv::Mat> {
+      try {
+        return run.frames->load(views[i].index).image;
+      } catch (const Error&) {
+        return std::nullopt;
+      }
+    };
+    const std::size_t step = std::max<std::size_t>(1, points.size() / kReachPoints);
+    std::vector<Eigen::Vector3f> some;
+    for (std::size_t p = 0; p < points.size(); p += step) {
+      some.push_back(points[p]);
+    }
+    const ElevationReach reach = reachFromFates(
+        followPoints(some, views, image, run.sonar, keep), 0.5 * run.sonar.verticalAperture(),
+        SincSquaredBeam(run.sonar.verticalAperture()).null(1));
+    run.choose(elevationReachChoice(reach));
+    if (reach.shortened()) {
+      run.sonar = run.sonar.withElevationReach(reach.reach_rad);
+    }
+  }
+
+  // Frames whose sonar lies within its range of the points' box, at most kReachFrames of them
+  // evenly spread.
+  static std::vector<PosedFrame> framesThatMaySee(const RunContext& run,
+                                                  const std::vector<Eigen::Vector3f>& points) {
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3f& p : points) {
+      box.extend(p.cast<double>());
+    }
+    const double reach = run.sonar.range().maxRange();
+    std::vector<PosedFrame> near;
+    for (const PosedFrame& frame : run.posed) {
+      if (box.exteriorDistance(frame.T_world_sonar.translation()) <= reach) {
+        near.push_back(frame);
+      }
+    }
+    const std::size_t stride = (near.size() + kReachFrames - 1) / kReachFrames;
+    std::vector<PosedFrame> spread;
+    for (std::size_t i = 0; i < near.size(); i += std::max<std::size_t>(1, stride)) {
+      spread.push_back(near[i]);
+    }
+    return spread;
   }
 };
 
