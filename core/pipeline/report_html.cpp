@@ -160,7 +160,7 @@ std::string mission(const Figures& f, const ReportPage& page) {
   if (!page.plan_svg.empty()) {
     html += "<figure>" + page.plan_svg +
             "<figcaption><b>The track in plan</b>, north up: the sonar's path (red, from the green "
-            "start), the fans it swept (blue, darker where they overlap) and the map's surface "
+            "start), the area its fans swept (blue) and the map's surface "
             "points (black).</figcaption>"
             "</figure>";
   }

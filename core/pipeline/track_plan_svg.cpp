@@ -91,7 +91,8 @@ std::string trackPlanSvg(const SurveyPlan& plan, const std::vector<Eigen::Vector
                     "\" font-family=\"sans-serif\" role=\"img\" aria-label=\"track plan\">"
                     "<rect width=\"100%\" height=\"" +
                     std::to_string(height_px) + "\" fill=\"#fbfbfd\" stroke=\"#ccc\"/>";
-  svg += "<g fill=\"#2f7fd1\" fill-opacity=\"0.07\" stroke=\"none\">";
+  // Opaque fans in a translucent group: their union, evenly pale however many overlap.
+  svg += "<g fill=\"#2f7fd1\" opacity=\"0.25\" stroke=\"none\">";
   for (const auto& polygon : plan.footprints) {
     svg += "<polygon points=\"" + polyline(polygon, frame, 1) + "\"/>";
   }

@@ -1,5 +1,5 @@
-// The survey's plan for the report (pipeline/report_html.h), as inline SVG: the fans swept
-// (pale), the map's surface points, the track with its start and end, a north arrow and a
+// The survey's plan for the report (pipeline/report_html.h), as inline SVG: the area the fans
+// swept (pale), the map's surface points, the track with its start and end, a north arrow and a
 // scale bar; north up.
 #pragma once
 
