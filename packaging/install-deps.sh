@@ -22,6 +22,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools assimp-utils
   # PROJ's cs2cs: the georeferenced export is checked against it (tests/e2e/geodetic_nav_test.cpp)
   proj-bin
+  # a headless browser: the survey report (report.html) opens offline in it (tests/e2e/report_page_test.cpp)
+  chromium
   # the Debian package (packaging/README.md): CPack's DEB generator, man pages, the package test
   dpkg-dev help2man lintian desktop-file-utils appstream man-db
 )

@@ -1,12 +1,15 @@
 #include "run_history_panel.h"
 
+#include <QDesktopServices>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTextBrowser>
+#include <QUrl>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -62,9 +65,13 @@ RunHistoryPanel::RunHistoryPanel(QWidget* parent) : QWidget(parent) {
   compare_->setToolTip(tr("Select two runs to see their differing parameters and figures"));
   go_back_ = new QPushButton(tr("Go back to this run"));
   go_back_->setToolTip(tr("Restore the selected run's parameters and run them again"));
+  open_report_ = new QPushButton(tr("Open report"));
+  open_report_->setToolTip(
+      tr("Open the selected run's survey report (report.html) in the web browser"));
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(compare_);
   buttons->addWidget(go_back_);
+  buttons->addWidget(open_report_);
   buttons->addStretch(1);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
@@ -78,7 +85,23 @@ RunHistoryPanel::RunHistoryPanel(QWidget* parent) : QWidget(parent) {
       emit goBackRequested(selected.front());
     }
   });
+  connect(open_report_, &QPushButton::clicked, this, [this] {
+    const QString report = selectedReport();
+    if (!report.isEmpty()) {
+      QDesktopServices::openUrl(QUrl::fromLocalFile(report));
+    }
+  });
   updateButtons();
+}
+
+QString RunHistoryPanel::selectedReport() const {
+  const auto selected = selectedRuns();
+  if (selected.size() != 1) {
+    return {};
+  }
+  const QString report =
+      QString::fromStdString(runs_[static_cast<std::size_t>(selected.front())].report);
+  return !report.isEmpty() && QFileInfo(report).isFile() ? report : QString();
 }
 
 void RunHistoryPanel::setRuns(const std::vector<RunRecord>& runs) {
@@ -126,6 +149,7 @@ void RunHistoryPanel::updateButtons() {
   const auto selected = selectedRuns();
   compare_->setEnabled(selected.size() == 2);
   go_back_->setEnabled(selected.size() == 1);
+  open_report_->setEnabled(!selectedReport().isEmpty());
 }
 
 QString RunHistoryPanel::comparison(const RunRecord& a, int a_index, const RunRecord& b,

@@ -24,6 +24,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardItemModel>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTime>
@@ -878,8 +879,12 @@ void MainWindow::startRun() {
     const QSignalBlocker block(pause_action_);
     pause_action_->setChecked(false);
   }
+  const QString report_folder =
+      QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + "/runs/" +
+      QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss-zzz");
+  run_report_ = report_folder + "/report.html";
   runner_->start({mission_, params, truth_, map_view_->colourBy(), map_view_->clip(),
-                  map_view_->mapPointBudget()});
+                  map_view_->mapPointBudget(), report_folder.toStdString()});
   map_view_->setCaption(
       tr("Carving: provisional; translucent voxels are still in view and may yet be carved "
          "away (ghosts in the beam's tails go as more views arrive)"));
@@ -1240,6 +1245,7 @@ void MainWindow::recordRun(const ReconstructionResult& result) {
   run.surface_points = result.surface.size();
   run.mesh_triangles = result.mesh.triangles.size();
   run.seconds = result.total_s;
+  run.report = run_report_.toStdString();
   runs_.push_back(run);
   history_panel_->setRuns(runs_);
 }

@@ -182,6 +182,8 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const NoiseModel> run_noise_model_;
   std::string noise_model_path_;
   ReconstructionParams run_params_;
+  /// The running run's report.html, in the workbench's data folder (runs/<started>/).
+  QString run_report_;
 
   widgets::FanView* raw_view_ = nullptr;
   widgets::FanView* denoised_view_ = nullptr;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "common/error.h"
 #include "common/thread_pool.h"
 
 namespace sonarcarve::gui {
@@ -172,9 +173,22 @@ int ReconstructionRunner::start(RunRequest request) {
                 emit noiseModelChosen(current(), model);
               });
             });
+        Pipeline pipeline(*request.mission, request.params, pool_);
+        if (!request.report_folder.empty()) {
+          std::error_code ec;
+          std::filesystem::create_directories(request.report_folder, ec);
+          if (ec) {
+            throw Error(request.report_folder.string(), "",
+                        "cannot make the run's report folder: " + ec.message());
+          }
+          OutputSettings report;
+          report.folder = request.report_folder;
+          report.arguments = {"sonarcarve", "(workbench run)", request.mission->folder.string()};
+          report.report_only = true;
+          pipeline.writeOutputsTo(std::move(report));
+        }
         auto result = std::make_shared<const ReconstructionResult>(
-            Pipeline(*request.mission, request.params, pool_)
-                .run(progress, &observer, kMapUpdateFrames));
+            pipeline.run(progress, &observer, kMapUpdateFrames));
         auto points =
             std::make_shared<const std::vector<Eigen::Vector3f>>(positionsOf(result->surface));
         std::vector<float> surface_errors_m;

@@ -35,6 +35,8 @@ struct RunRequest {
   /// The 3D view's budget of map points: the errors against the truth are kept for as many
   /// voxels at most.
   std::size_t view_points = widgets::MapLod::kDefaultMaxPoints;
+  /// Where the run writes its report.json and report.html (made if missing); none if empty.
+  std::filesystem::path report_folder;
 };
 
 class ReconstructionRunner : public QObject {

@@ -3,18 +3,61 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "common/angles.h"
 #include "eval/evaluator.h"
 #include "geometry/scene_io.h"
 #include "io/frame_source.h"
 #include "pipeline/keep_level.h"
+#include "pipeline/param_schema.h"
 #include "pipeline/refined_track.h"
 
 namespace sonarcarve {
+namespace {
 
-std::string reconstructionReport(const Mission& mission, const ReconstructionParams& params,
-                                 const ReconstructionResult& result, ThreadPool& pool) {
+nlohmann::json sonarReport(const SonarModel& sonar) {
+  return {{"id", sonar.id()},
+          {"range_min_m", sonar.range().min_m},
+          {"range_max_m", sonar.range().maxRange()},
+          {"range_bins", sonar.rows()},
+          {"beams", sonar.cols()},
+          {"horizontal_aperture_deg", radToDeg(sonar.bearings().fieldOfView())},
+          {"vertical_aperture_deg", radToDeg(sonar.verticalAperture())}};
+}
+
+nlohmann::json surveyReport(const SurveyPlan& survey) {
+  return {{"track_length_m", survey.track_length_m},
+          {"depth_min_m", survey.depth_min_m},
+          {"depth_max_m", survey.depth_max_m},
+          {"coverage_area_m2", survey.coverage_area_m2}};
+}
+
+// Every parameter as params.yaml writes it, with its unit, its help line and whether the run
+// changed it from its default.
+nlohmann::json parametersReport(const ReconstructionParams& params) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const ParamSpec& spec : paramSchema()) {
+    const std::string value = formatParam(spec, spec.get(params));
+    list.push_back({{"key", spec.key},
+                    {"value", value},
+                    {"unit", spec.unit},
+                    {"help", spec.help},
+                    {"changed", value != formatParam(spec, spec.defaultValue())}});
+  }
+  return list;
+}
+
+}  // namespace
+
+std::string reconstructionReport(const Mission& mission, const SonarModel& sonar,
+                                 const ReconstructionParams& params,
+                                 const ReconstructionResult& result, const SurveyPlan& survey,
+                                 ThreadPool& pool) {
   const Eigen::Vector3d& origin = mission.origin_ned_m;
   nlohmann::json report = {{"mission", mission.folder.string()},
+                           {"mission_name", mission.name},
+                           {"sonar", sonarReport(sonar)},
+                           {"frames_in_mission", mission.frames.size()},
+                           {"survey", surveyReport(survey)},
                            {"origin_ned_m", {origin.x(), origin.y(), origin.z()}},
                            {"engine", std::string(toString(params.engine))},
                            {"detector", result.detector},
@@ -44,6 +87,7 @@ std::string reconstructionReport(const Mission& mission, const ReconstructionPar
                        {"warning", c.warning}});
   }
   report["choices"] = std::move(choices);
+  report["parameters"] = parametersReport(params);
   if (result.evicted) {
     report["eviction"] = {{"pages_freed_early", result.pages_freed_early},
                           {"pages_set_aside", result.pages_set_aside},

@@ -17,6 +17,7 @@
 #include "pipeline/memory_budget.h"
 #include "pipeline/reconstruction.h"
 #include "pipeline/size_limits.h"
+#include "pipeline/survey_plan.h"
 
 namespace sonarcarve {
 
@@ -44,6 +45,7 @@ struct RunContext {
   std::optional<DenoisedFrames> frames{};  ///< denoise: what carving reads
   CarveStageResult carved{};               ///< carve
   std::optional<EvictingSurface> evicting_surface{};  ///< carve, in an evicting run
+  SurveyPlan survey{};                                ///< report: the track and fans in plan
 
   ReconstructionResult result{};
 

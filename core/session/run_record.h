@@ -27,6 +27,9 @@ struct RunRecord {
   std::size_t mesh_triangles = 0;
   double seconds = 0.0;
   std::optional<RunAccuracy> accuracy;
+  /// The run's survey report (report.html), written in the workbench's data folder; empty
+  /// for a run that wrote none.
+  std::string report;
 };
 
 }  // namespace sonarcarve

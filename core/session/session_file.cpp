@@ -37,6 +37,9 @@ YAML::Node runNode(const RunRecord& run) {
   n["surface_points"] = run.surface_points;
   n["mesh_triangles"] = run.mesh_triangles;
   n["seconds"] = run.seconds;
+  if (!run.report.empty()) {
+    n["report"] = run.report;
+  }
   if (run.accuracy) {
     YAML::Node a;
     a["fscore"] = run.accuracy->fscore;
@@ -74,6 +77,9 @@ RunRecord runOf(const YamlFields& f, const YAML::Node& n, const std::string& pat
     run.mesh_triangles = count(f, n["mesh_triangles"], path + ".mesh_triangles");
   }
   run.seconds = f.number(f.child(n, path, "seconds"), path + ".seconds");
+  if (n["report"]) {
+    run.report = f.text(n["report"], path + ".report");
+  }
   if (const YAML::Node a = n["accuracy"]) {
     const std::string at = path + ".accuracy";
     RunAccuracy accuracy;

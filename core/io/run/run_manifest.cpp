@@ -8,6 +8,7 @@
 
 #include "common/error.h"
 #include "common/input_limits.h"
+#include "common/sha256.h"
 #include "io/files/atomic_file.h"
 #include "io/files/input_file.h"
 
@@ -60,6 +61,20 @@ nlohmann::json readManifest(const std::filesystem::path& path) {
   }
 }
 
+// The SHA-256 of a file, read in pieces; empty if it cannot be read.
+std::string fileSha256(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    return {};
+  }
+  Sha256 hash;
+  std::string piece(1 << 20, '\0');
+  while (in.read(piece.data(), static_cast<std::streamsize>(piece.size())) || in.gcount() > 0) {
+    hash.update(std::string_view(piece.data(), static_cast<std::size_t>(in.gcount())));
+  }
+  return in.bad() ? std::string() : hash.hexDigest();
+}
+
 }  // namespace
 
 std::optional<std::string> manifestStatus(const std::filesystem::path& folder) {
@@ -98,7 +113,7 @@ RunManifest::RunManifest(std::filesystem::path folder, std::vector<std::string> 
 void RunManifest::wrote(const std::string& name) {
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(folder_ / name, ec);
-  files_.push_back({name, ec ? 0 : bytes});
+  files_.push_back({name, ec ? 0 : bytes, fileSha256(folder_ / name)});
 }
 
 void RunManifest::finish(const std::string& status, const std::string& error) {
@@ -120,7 +135,7 @@ void RunManifest::finish(const std::string& status, const std::string& error) {
 void RunManifest::write(const std::string& status, const std::string& error) const {
   nlohmann::json files = nlohmann::json::array();
   for (const RunManifestFile& f : files_) {
-    files.push_back({{"name", f.name}, {"bytes", f.bytes}});
+    files.push_back({{"name", f.name}, {"bytes", f.bytes}, {"sha256", f.sha256}});
   }
   nlohmann::json manifest = {{"format", "sonarcarve run manifest 1"},
                              {"arguments", arguments_},

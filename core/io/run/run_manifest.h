@@ -1,6 +1,6 @@
 // The manifest of a run in its output folder (docs/formats.md, "Run manifest"): which command
-// made the folder's files, when, with what result, and each file with its size, so that a
-// folder never holds an unexplained mix of two runs. Written atomically (io/files/atomic_file.h).
+// made the folder's files, when, with what result, and each file with its size and SHA-256, so that
+// a folder never holds an unexplained mix of two runs. Written atomically (io/files/atomic_file.h).
 //
 // A run opens its manifest once its results are computed and before its first output is
 // written: the manifest then says "running" and lists the earlier run's files still in the
@@ -20,6 +20,7 @@ namespace sonarcarve {
 struct RunManifestFile {
   std::string name;  ///< in the output folder
   std::uintmax_t bytes = 0;
+  std::string sha256;  ///< of its bytes as written, lowercase hex; empty if unreadable
 };
 
 class RunManifest {
@@ -33,8 +34,10 @@ class RunManifest {
   RunManifest(std::filesystem::path folder, std::vector<std::string> arguments,
               const std::vector<std::string>& known_outputs);
 
-  /// Records a file of this run, its size read from the folder.
+  /// Records a file of this run, its size and SHA-256 read from the folder.
   void wrote(const std::string& name);
+  /// The files of this run recorded so far, in the order written.
+  const std::vector<RunManifestFile>& files() const { return files_; }
 
   /// Removes the earlier files this run did not rewrite, then writes the manifest with
   /// `status` ("complete", "cancelled" or "failed") and `error` (for "failed").

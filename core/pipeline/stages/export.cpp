@@ -11,15 +11,28 @@
 #include "mesh/mesh_export.h"
 #include "occlusion/surface_points.h"
 #include "pipeline/refined_track.h"
+#include "pipeline/report_page.h"
 #include "pipeline/run_context.h"
 #include "pipeline/stages/standard_stages.h"
 
 namespace sonarcarve {
 namespace {
 
+// report.json, then report.html, which lists the files written before it with checksums.
+void writeReports(const RunContext& run, const std::filesystem::path& out, RunManifest& manifest) {
+  writeFileAtomically(out / "report.json", run.result.report);
+  manifest.wrote("report.json");
+  writeReportPage(run, out, manifest.files());
+  manifest.wrote("report.html");
+}
+
 void writeOutputs(const RunContext& run, const OutputSettings& settings, RunManifest& manifest) {
   const std::filesystem::path& out = settings.folder;
   const ReconstructionResult& result = run.result;
+  if (settings.report_only) {
+    writeReports(run, out, manifest);
+    return;
+  }
   const Eigen::Vector3d& origin = run.mission.origin_ned_m;
   const std::string& crs = run.mission.crs;
   writeSurfacePointsPly(result.surface, out / "surface_points.ply", origin, crs);
@@ -58,8 +71,7 @@ void writeOutputs(const RunContext& run, const OutputSettings& settings, RunMani
   }
   writeFileAtomically(out / "params.yaml", run.params.toYaml());
   manifest.wrote("params.yaml");
-  writeFileAtomically(out / "report.json", result.report);
-  manifest.wrote("report.json");
+  writeReports(run, out, manifest);  // last: the page lists the others with checksums
 }
 
 class ExportStage : public Stage {
@@ -100,9 +112,9 @@ class ExportStage : public Stage {
 }  // namespace
 
 const std::vector<std::string>& runOutputFiles() {
-  static const std::vector<std::string> files = {"surface_points.ply", "map.bt",      "mesh.ply",
-                                                 "mesh.stl",           "params.yaml", "report.json",
-                                                 "refined_nav.csv",    "map.scmap"};
+  static const std::vector<std::string> files = {
+      "surface_points.ply", "map.bt",      "mesh.ply",        "mesh.stl", "params.yaml",
+      "report.json",        "report.html", "refined_nav.csv", "map.scmap"};
   return files;
 }
 

@@ -18,7 +18,9 @@ class ReportStage : public Stage {
     if (announce_) {
       announce_(run.result);
     }
-    run.result.report = reconstructionReport(run.mission, run.params, run.result, run.pool);
+    run.survey = surveyPlan(run.posed, run.sonar);
+    run.result.report =
+        reconstructionReport(run.mission, run.sonar, run.params, run.result, run.survey, run.pool);
   }
 
  private:

@@ -35,6 +35,9 @@ struct OutputSettings {
   /// Told of the run's result before its report and outputs are written (the CLI prints its
   /// choices and warnings then, so that they show even when writing fails).
   std::function<void(const ReconstructionResult&)> announce;
+  /// Only report.json and report.html (and the manifest): the workbench's runs, whose
+  /// deliverables the analyst exports when wanted.
+  bool report_only = false;
 };
 
 /// Every file a run can write: one of an earlier run that this run does not rewrite is
