@@ -37,13 +37,15 @@ struct RunContext {
   bool evicting = false;     ///< finished blocks are let go as the track leaves them
 
   // What the stages leave for the next ones, in the order they run.
-  std::vector<PosedFrame> posed{};         ///< read: the selected frames the navigation places
-  CarveStageParams carving{};              ///< read; choose sets the shadow rule and keep level
-  Eigen::AlignedBox3d bounds{};            ///< read: the box the map covers
-  MemoryEstimate buffers{};                ///< read: the per-thread buffers' estimate
-  NoiseChoice noise{};                     ///< denoise
-  std::optional<DenoisedFrames> frames{};  ///< denoise: what carving reads
-  CarveStageResult carved{};               ///< carve
+  std::vector<PosedFrame> posed{};  ///< read: the selected frames the navigation places
+  CarveStageParams carving{};       ///< read; choose sets the shadow rule and keep level
+  Eigen::AlignedBox3d bounds{};     ///< read: the box the map covers
+  MemoryEstimate buffers{};         ///< read: the per-thread buffers' estimate
+  NoiseChoice noise{};              ///< denoise
+  /// beam check: up to 4,000 points of a first surface carved inside the aperture
+  std::vector<Eigen::Vector3f> first_surface{};
+  std::optional<DenoisedFrames> frames{};             ///< denoise: what carving reads
+  CarveStageResult carved{};                          ///< carve
   std::optional<EvictingSurface> evicting_surface{};  ///< carve, in an evicting run
   SurveyPlan survey{};                                ///< report: the track and fans in plan
 

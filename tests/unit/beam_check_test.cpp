@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/reconstruction.h"
+#include "pipeline/surface_kept.h"
 #include "sim/demo_scenes.h"
 #include "sim/elevation_pattern.h"
 #include "sim/simulation_run.h"
@@ -36,10 +37,11 @@ class BeamCheck : public ::testing::Test {
     runSimulation(request, progress, pool);
   }
 
-  static ReconstructionResult reconstruct(const Mission& mission) {
+  static ReconstructionResult reconstruct(const Mission& mission, double dynamic_range_db = 20.0) {
     static ThreadPool pool(2);
     ReconstructionParams params;
     params.mesh_enabled = false;
+    params.carve.dynamic_range_db = dynamic_range_db;
     SilentProgress progress;
     return Pipeline(mission, params, pool).run(progress);
   }
@@ -98,9 +100,29 @@ TEST_F(BeamCheck, ABeamCutShortOfItsDeclaredNullIsCarvedOutToItsCut) {
   const ReconstructionResult matched = reconstruct(mission("realistic"));
   EXPECT_GT(result.surface.size(), matched.surface.size() / 2);
   EXPECT_EQ(findChoice(result.choices, "surface"), nullptr);
+  const RunChoice* kept = findChoice(result.choices, "first surface kept");
+  ASSERT_NE(kept, nullptr);
+  EXPECT_FALSE(kept->warning) << kept->detail;
   const RunChoice* as_declared = findChoice(matched.choices, "elevation beam reach");
   ASSERT_NE(as_declared, nullptr);
   EXPECT_FALSE(as_declared->warning) << as_declared->detail;
+}
+
+TEST_F(BeamCheck, ARunThatCarvesAwayMostOfAFirstCarveSaysSo) {
+  // A keep level 10 dB under the bright returns carves away every surface that returns less:
+  // most of what a first carve inside the aperture kept (18 % is left; at 6 dB nothing is,
+  // and the "surface" choice says so).
+  const ReconstructionResult thin = reconstruct(mission("realistic"), 10.0);
+  const RunChoice* kept = findChoice(thin.choices, "first surface kept");
+  ASSERT_NE(kept, nullptr);
+  EXPECT_TRUE(kept->warning) << kept->detail;
+  EXPECT_LT(std::stod(kept->value), 100.0 * kKeptFirstSurfaceShare);
+  // At the default keep level the run keeps it, less the first carve's ghosts.
+  const ReconstructionResult full = reconstruct(mission("realistic"));
+  const RunChoice* as_carved = findChoice(full.choices, "first surface kept");
+  ASSERT_NE(as_carved, nullptr);
+  EXPECT_FALSE(as_carved->warning) << as_carved->detail;
+  EXPECT_GT(full.surface.size(), thin.surface.size());
 }
 
 TEST_F(BeamCheck, ARunThatKeepsNoSurfaceSaysSo) {

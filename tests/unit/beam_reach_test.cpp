@@ -8,6 +8,7 @@
 #include <random>
 
 #include "common/angles.h"
+#include "pipeline/surface_kept.h"
 
 namespace sonarcarve {
 namespace {
@@ -79,6 +80,37 @@ TEST(BeamReach, TheChoiceWarnsOnlyWhenTheReachIsShortened) {
   EXPECT_TRUE(choice.warning);
   EXPECT_NE(choice.reason.find("shorter than declared"), std::string::npos);
   EXPECT_FALSE(choice.action.empty());
+}
+
+}  // namespace
+}  // namespace sonarcarve
+
+namespace sonarcarve {
+namespace {
+
+TEST(FirstSurfaceKept, CountsThePointsWithASurfacePointWithinTwoVoxels) {
+  const double voxel = 0.02;
+  // 100 points 10 cm apart; the run's surface 1.5 voxels off the first `near` of them and 10
+  // voxels off the next 30.
+  const auto surfaceFor = [](int near) {
+    std::vector<Eigen::Vector3f> surface;
+    for (int i = 0; i < near + 30; ++i) {
+      surface.emplace_back(0.1f * static_cast<float>(i), 5.0f + (i < near ? 0.03f : 0.2f), 2.0f);
+    }
+    return surface;
+  };
+  std::vector<Eigen::Vector3f> first;
+  for (int i = 0; i < 100; ++i) {
+    first.emplace_back(0.1f * static_cast<float>(i), 5.0f, 2.0f);
+  }
+  const FirstSurfaceKept lost = firstSurfaceKept(first, surfaceFor(20), voxel);
+  EXPECT_EQ(lost.first_points, 100u);
+  EXPECT_EQ(lost.kept, 20u);
+  EXPECT_TRUE(firstSurfaceKeptChoice(lost).warning);
+  const FirstSurfaceKept kept = firstSurfaceKept(first, surfaceFor(60), voxel);
+  EXPECT_EQ(kept.kept, 60u);
+  EXPECT_FALSE(firstSurfaceKeptChoice(kept).warning);
+  EXPECT_EQ(firstSurfaceKeptChoice(kept).value, "60 %");
 }
 
 }  // namespace

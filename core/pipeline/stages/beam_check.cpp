@@ -76,15 +76,19 @@ class BeamCheckStage : public Stage {
         return std::nullopt;
       }
     };
-    const BeamTailCheck check =
-        checkBeamTails(positionsOf(surface.surface), carved.used, excess, run.sonar,
-                       background ? background->stddev() : cv::Mat());
+    const std::vector<Eigen::Vector3f> points = positionsOf(surface.surface);
+    const BeamTailCheck check = checkBeamTails(points, carved.used, excess, run.sonar,
+                                               background ? background->stddev() : cv::Mat());
+    const std::size_t step = std::max<std::size_t>(1, points.size() / kReachPoints);
+    for (std::size_t p = 0; p < points.size(); p += step) {
+      run.first_surface.push_back(points[p]);
+    }
     run.choose(beamTailChoice(check));
     if (!check.tails_present) {
       run.sonar = clipped;
       return;
     }
-    findReach(run, positionsOf(surface.surface), progress);
+    findReach(run, run.first_surface, progress);
   }
 
  private:

@@ -5,6 +5,7 @@
 
 #include "pipeline/run_context.h"
 #include "pipeline/stages/standard_stages.h"
+#include "pipeline/surface_kept.h"
 #include "pipeline/surface_stage.h"
 
 namespace sonarcarve {
@@ -29,6 +30,12 @@ RunChoice emptySurfaceChoice(const RunContext& run) {
   choice.detail = std::to_string(voxels) + " occupied voxels after carving " +
                   std::to_string(run.result.frames_used) + " frames; min_views " +
                   std::to_string(run.params.min_views);
+  if (!run.first_surface.empty()) {
+    choice.detail += "; a first carve inside the aperture from the middle of the mission kept " +
+                     std::to_string(run.first_surface.size()) +
+                     " surface points (looked at): the frames show structure that the run's "
+                     "rules carved away";
+  }
   return choice;
 }
 
@@ -53,8 +60,14 @@ class SurfaceStage : public Stage {
     } else {
       resolveWholeMap(run, progress);
     }
-    if (!run.result.cancelled && run.result.surface.empty()) {
+    if (run.result.cancelled) {
+      return;
+    }
+    if (run.result.surface.empty()) {
       run.choose(emptySurfaceChoice(run));
+    } else if (!run.first_surface.empty()) {
+      run.choose(firstSurfaceKeptChoice(firstSurfaceKept(
+          run.first_surface, positionsOf(run.result.surface), run.carving.carve.voxel_size_m)));
     }
   }
 
