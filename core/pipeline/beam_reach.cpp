@@ -72,7 +72,19 @@ ElevationReach reachFromFates(const std::vector<PointFate>& fates, double apertu
       while (start > 0 && tells(reach.bands[start - 1], kCliffOnset)) {
         --start;
       }
-      reach.reach_rad = reach.bands[start].lo_rad;
+      // The tails worked inside the cut: a plateau of bands that carve little. Without one
+      // the views carve many points at every elevation (a first surface of ghosts, from a
+      // short mission, which the tails are there to carve).
+      const bool plateau =
+          start >= kReachPlateauBands &&
+          std::all_of(reach.bands.begin() + static_cast<std::ptrdiff_t>(start - kReachPlateauBands),
+                      reach.bands.begin() + static_cast<std::ptrdiff_t>(start),
+                      [](const ReachBand& inside) {
+                        return inside.at_risk >= kReachMinAtRisk && inside.hazard() <= kCliffOnset;
+                      });
+      if (plateau) {
+        reach.reach_rad = reach.bands[start].lo_rad;
+      }
       break;
     }
   }

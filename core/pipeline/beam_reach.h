@@ -15,7 +15,8 @@
 // know what hides a point (the check has no occlusion) carve more in an orbit: up to 9.5 %.
 // The reach is the inner edge of the first band whose hazard exceeds kCliffHazard, moved in
 // over the bands just inside it whose hazard exceeds kCliffOnset (the cut shows a band or two
-// early: a point's first view past the cut lies up to a view's spacing past it).
+// early: a point's first view past the cut lies up to a view's spacing past it), and only
+// where a plateau of bands that carve little lies inside it.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -38,6 +39,11 @@ inline constexpr double kReachBandRad = 0.5 * 3.14159265358979323846 / 180.0;
 /// the bands just inside it that carve more than kCliffOnset are its start.
 inline constexpr double kCliffHazard = 0.15;
 inline constexpr double kCliffOnset = 0.075;
+/// The bands just inside the end that must carve little (the tails working there); a mission
+/// whose views carve many points everywhere (a first surface of ghosts, from a short
+/// mission: 18 to 50 % a band on 16 frames of the riser, whose tails then carve them) is left
+/// as declared.
+inline constexpr std::size_t kReachPlateauBands = 2;
 /// A band needs this many points seen in it, still standing, to tell.
 inline constexpr std::size_t kReachMinAtRisk = 100;
 

@@ -14,6 +14,9 @@
 
 namespace sonarcarve {
 
+/// A first surface carved from fewer frames is mostly ghosts (16 frames of the riser: 11 % of
+/// it kept by a run as declared) and is not a measure.
+inline constexpr std::size_t kFirstSurfaceMinFrames = 24;
 /// Under this share of the first surface kept, the run warns.
 inline constexpr double kKeptFirstSurfaceShare = 0.25;
 

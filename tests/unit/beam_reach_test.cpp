@@ -64,6 +64,21 @@ TEST(BeamReach, ABeamCutShortIsFoundWithinABandOfItsCut) {
   }
 }
 
+TEST(BeamReach, ViewsThatCarveManyPointsEverywhereLeaveTheBeamAsDeclared) {
+  // A first surface of ghosts from a short mission: the tails carve 30 % of them a band from
+  // the aperture's edge, as the declared beam's tails should.
+  std::vector<PointFate> ghosts(4000);
+  std::mt19937 random(5);
+  std::exponential_distribution<double> carved(1.0 / degToRad(1.5));
+  for (PointFate& fate : ghosts) {
+    fate.widest_view = degToRad(kFirstNull);
+    fate.carved_at = degToRad(kHalf) + carved(random);
+  }
+  const ElevationReach reach = reachFromFates(ghosts, degToRad(kHalf), degToRad(kFirstNull));
+  EXPECT_GT(reach.bands[0].hazard(), kCliffHazard);  // the case the plateau rule is for
+  EXPECT_FALSE(reach.shortened());
+}
+
 TEST(BeamReach, TooFewPointsTellNothing) {
   const ElevationReach reach =
       reachFromFates(fates(50, 0.3, 13.6, 0.6, 3), degToRad(kHalf), degToRad(kFirstNull));

@@ -83,6 +83,7 @@ class BeamCheckStage : public Stage {
     for (std::size_t p = 0; p < points.size(); p += step) {
       run.first_surface.push_back(points[p]);
     }
+    run.first_surface_frames = carved.used.size();
     run.choose(beamTailChoice(check));
     if (!check.tails_present) {
       run.sonar = clipped;

@@ -65,7 +65,7 @@ class SurfaceStage : public Stage {
     }
     if (run.result.surface.empty()) {
       run.choose(emptySurfaceChoice(run));
-    } else if (!run.first_surface.empty()) {
+    } else if (!run.first_surface.empty() && run.first_surface_frames >= kFirstSurfaceMinFrames) {
       run.choose(firstSurfaceKeptChoice(firstSurfaceKept(
           run.first_surface, positionsOf(run.result.surface), run.carving.carve.voxel_size_m)));
     }
