@@ -879,10 +879,18 @@ void MainWindow::startRun() {
     const QSignalBlocker block(pause_action_);
     pause_action_->setChecked(false);
   }
-  const QString report_folder =
-      QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + "/runs/" +
-      QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss-zzz");
-  run_report_ = report_folder + "/report.html";
+  // The run's report scores the mission's ground truth itself: a ground truth the workbench
+  // could not read (it said so in the log, and carries on without it) would fail the run, so
+  // such a run writes no report.
+  std::error_code ec;
+  const bool truth_unreadable =
+      !truth_ && std::filesystem::exists(mission_->folder / "ground_truth.ply", ec);
+  QString report_folder;
+  if (!truth_unreadable) {
+    report_folder = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) +
+                    "/runs/" + QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss-zzz");
+  }
+  run_report_ = report_folder.isEmpty() ? QString() : report_folder + "/report.html";
   runner_->start({mission_, params, truth_, map_view_->colourBy(), map_view_->clip(),
                   map_view_->mapPointBudget(), report_folder.toStdString()});
   map_view_->setCaption(
