@@ -58,7 +58,7 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
     throw Error("--surface-only", "", "needs --load-map: the map whose surface to resolve");
   }
   if (!o.load_map.empty()) {
-    pipeline.startFrom(loadMap(o.load_map), !o.surface_only);
+    pipeline.startFrom(loadMap(o.load_map), !o.surface_only, o.load_map);
   }
   if (o.save_map) {
     pipeline.keepWholeMap();  // map.scmap is the whole map

@@ -1,6 +1,7 @@
 #include "cli/source_flags.h"
 
 #include "common/error.h"
+#include "sonar/sonar_ranges.h"
 
 namespace sonarcarve::cli {
 namespace {
@@ -40,7 +41,15 @@ void addSourceFlags(CLI::App& cmd, SourceFlags& flags) {
                  "Seconds added to the frame times to put them on the navigation clock")
       ->capture_default_str();
   cmd.add_option("--aperture-deg", flags.aperture_deg,
-                 "Vertical aperture (Oculus default: 20 below 1.5 MHz, 12 above)");
+                 "Vertical aperture (Oculus default: 20 below 1.5 MHz, 12 above)")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            double value = 0.0;
+            return CLI::detail::lexical_cast(text, value)
+                       ? outsideRange(value, kVerticalAperture).value_or("")
+                       : "expected a number of degrees, got " + text;
+          },
+          "DEGREES"));
   cmd.add_option("--beam-pattern", flags.beam_pattern,
                  "Elevation beam of a recording that does not say: sinc (a real array's main "
                  "lobe, the default) or clipped (nothing outside +-aperture/2, as our simulator's "

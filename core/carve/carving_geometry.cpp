@@ -5,9 +5,39 @@
 #include <numbers>
 
 #include "common/error.h"
+#include "common/number_text.h"
 #include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
+
+namespace {
+
+// Why the ranges carved are empty, naming where each end comes from: the parameters when they
+// were set, the sonar's own declaration otherwise.
+std::string emptyRangeWindow(const RangeBins& sonar, const CarveParams& params) {
+  const std::string sonar_ranges = "the sonar's ranges " + shortestNumber(sonar.min_m) + " to " +
+                                   shortestNumber(sonar.maxRange()) + " m";
+  const bool min_set = params.range_min_m > sonar.min_m;
+  const bool max_set = params.range_max_m > 0.0;
+  if (!min_set && !max_set) {
+    return sonar_ranges +
+           " (min_m + bins x resolution_m) hold no range: expected a sonar "
+           "whose bins span some distance";
+  }
+  std::string given;
+  if (min_set) {
+    given = "range_min_m " + shortestNumber(params.range_min_m);
+  }
+  if (max_set) {
+    given += (given.empty() ? "" : " and ") + std::string("range_max_m ") +
+             shortestNumber(params.range_max_m);
+  }
+  return "with " + given + ", nothing is left of " + sonar_ranges +
+         ": expected range_min_m below range_max_m, both within the sonar's ranges (0 = the "
+         "sonar's own)";
+}
+
+}  // namespace
 
 bool carvesMainLobe(const SonarModel& sonar, const CarveParams& params) {
   return params.beam_aware && sonar.elevationBeam() == ElevationBeam::MainLobe;
@@ -19,7 +49,7 @@ CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& par
   range_max_ = params.range_max_m > 0.0 ? std::min(params.range_max_m, sonar.range().maxRange())
                                         : sonar.range().maxRange();
   if (!(range_max_ > range_min_)) {
-    throw Error("carving", "range window", "expected range_max_m > range_min_m");
+    throw Error("parameters", "range window", emptyRangeWindow(sonar.range(), params));
   }
   range_min_sq_ = static_cast<float>(range_min_ * range_min_);
   range_max_sq_ = static_cast<float>(range_max_ * range_max_);

@@ -43,8 +43,8 @@ void DetectorParams::validate() const {
   if (!hasName(mode)) {
     throw Error("parameters", "detector.mode", "expected auto, none, ztest or cfar");
   }
-  if (smoothing < 1 || smoothing % 2 == 0) {
-    throw Error("parameters", "detector.smoothing", "expected an odd window size >= 1");
+  if (const auto problem = smoothingProblem(smoothing)) {
+    throw Error("parameters", "detector.smoothing", *problem);
   }
   if (cfar_guard < 0 || cfar_train < 1) {
     throw Error("parameters", "detector.cfar", "expected guard >= 0 and train >= 1 cells");

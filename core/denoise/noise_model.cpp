@@ -1,12 +1,15 @@
 #include "denoise/noise_model.h"
 
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.h"
 #include "common/input_limits.h"
+#include "common/number_text.h"
 #include "io/files/atomic_file.h"
 #include "io/files/input_file.h"
+#include "io/files/yaml_block_keys.h"
 
 namespace sonarcarve {
 
@@ -22,7 +25,18 @@ NoiseModel::NoiseModel(cv::Mat mean, cv::Mat stddev, cv::Mat rayleigh_sigma,
       intensity_scale_(sonar.intensityScale()),
       frames_(frames),
       smoothing_(smoothing) {
+  if (const auto problem = smoothingProblem(smoothing)) {
+    throw Error("noise model", "smoothing", *problem);
+  }
   checkGeometry(sonar, "noise model");
+}
+
+std::optional<std::string> smoothingProblem(int size) {
+  if (size >= 1 && size <= kMaxSmoothingWindow && size % 2 != 0) {
+    return std::nullopt;
+  }
+  return "expected an odd whole number of pixels, from 1 to " +
+         std::to_string(kMaxSmoothingWindow) + ", got " + std::to_string(size);
 }
 
 cv::Mat smoothFrame(const cv::Mat& image, int size) {
@@ -144,14 +158,36 @@ std::string openCvReason(const cv::Exception& e) {
   return text;
 }
 
+// A matrix of statistics must hold finite numbers of at least `least` (a deviation is never
+// negative): a NaN mean or a negative deviation would test every pixel against nonsense.
+void requireStatistics(const std::string& file, const std::string& key, const cv::Mat& values,
+                       float least) {
+  for (int r = 0; r < values.rows; ++r) {
+    const auto* row = values.ptr<float>(r);
+    for (int c = 0; c < values.cols; ++c) {
+      if (!std::isfinite(row[c]) || row[c] < least) {
+        const std::string what = least == 0.0F ? "finite numbers >= 0" : "finite numbers";
+        throw Error(file, key + ", row " + std::to_string(r) + " column " + std::to_string(c),
+                    shortestNumber(row[c]) + ": expected " + what + " (the " + key +
+                        " of the empty-water frames' pixels)");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 NoiseModel NoiseModel::load(const std::filesystem::path& path) {
   const std::string file = path.string();
-  requireInputSize(path, "a noise model (sonarcarve-cli noise-model)", kMaxNoiseModelFileBytes);
+  const std::string text =
+      readInputFile(path, "a noise model (sonarcarve-cli noise-model)", kMaxNoiseModelFileBytes);
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    throw Error(file, "", "cannot read the noise model (empty or not YAML)");
+  }
+  requireUniqueBlockKeys(text, file);  // OpenCV's reader keeps the last of two
   NoiseModel model;
   try {
-    cv::FileStorage fs(file, cv::FileStorage::READ);
+    cv::FileStorage fs(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
     if (!fs.isOpened()) {
       throw Error(file, "", "cannot read the noise model (empty or not YAML)");
     }
@@ -164,6 +200,10 @@ NoiseModel NoiseModel::load(const std::filesystem::path& path) {
     fs["frames"] >> model.frames_;
     if (!fs["smoothing"].empty()) {
       fs["smoothing"] >> model.smoothing_;
+      if (const auto problem = smoothingProblem(model.smoothing_)) {
+        throw Error(file, "smoothing",
+                    *problem + " (a detector smooths by an odd window: learn the model again)");
+      }
     }
     fs["range_min_m"] >> model.range_min_m_;
     fs["range_resolution_m"] >> model.range_resolution_m_;
@@ -213,6 +253,11 @@ NoiseModel NoiseModel::load(const std::filesystem::path& path) {
     if (static_cast<int>(model.bearings_rad_.size()) != model.mean_.cols) {
       throw Error(file, "bearings_rad", "expected one bearing per column");
     }
+    requireStatistics(file, "mean", model.mean_, -std::numeric_limits<float>::infinity());
+    requireStatistics(file, "stddev", model.stddev_, 0.0F);
+    requireStatistics(file, "rayleigh_sigma", model.rayleigh_sigma_, 0.0F);
+  } catch (const Error&) {
+    throw;  // already names the file and the place
   } catch (const cv::Exception& e) {
     throw Error(file, "",
                 "corrupt noise model (expected the YAML that sonarcarve-cli noise-model "

@@ -13,6 +13,8 @@
 
 #include <filesystem>
 #include <opencv2/core.hpp>
+#include <optional>
+#include <string>
 
 #include "common/progress.h"
 #include "io/mission/mission.h"
@@ -55,6 +57,12 @@ class NoiseModel {
   int frames_ = 0;
   int smoothing_ = 1;
 };
+
+/// The largest box filter frames are smoothed by (detector.smoothing, noise models): 255 x 255.
+inline constexpr int kMaxSmoothingWindow = 255;
+/// What is wrong with `size` as the side of that box filter (odd, from 1 to
+/// kMaxSmoothingWindow), in words ending with what was expected; nothing when it is valid.
+std::optional<std::string> smoothingProblem(int size);
 
 /// The box filter (side `size`, odd, 1 = none) detectors and noise models apply to frames:
 /// averaging `size` x `size` pixels of independent speckle divides its variance by size^2.

@@ -9,6 +9,7 @@
 #include "occlusion/occlusion_resolver.h"
 #include "pipeline/size_limits.h"
 #include "pipeline/track_refinement.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 namespace {
@@ -33,11 +34,23 @@ Eigen::AlignedBox3d CarveStage::mapBounds(const std::vector<PosedFrame>& frames)
   if (params_.earlier_map) {
     bounds.extend(voxelCentresBox(*params_.earlier_map));
   }
-  if (params_.carve.region) {
-    bounds = bounds.intersection(*params_.carve.region);
-  }
   if (bounds.isEmpty()) {
-    throw Error("parameters", "region", "the region of interest is outside every frame's view");
+    throw Error("carving", "map box",
+                "the " + std::to_string(frames.size()) +
+                    " frames' views span no volume: expected a sonar whose fan and range "
+                    "window are not empty, and finite poses");
+  }
+  if (params_.carve.region) {
+    const Eigen::AlignedBox3d viewed = bounds;
+    bounds = bounds.intersection(*params_.carve.region);
+    if (bounds.isEmpty()) {
+      throw Error("parameters", "region",
+                  "the region of interest [" + nedText(params_.carve.region->min()) + "] to [" +
+                      nedText(params_.carve.region->max()) +
+                      "] m is outside every frame's view (they span [" + nedText(viewed.min()) +
+                      "] to [" + nedText(viewed.max()) +
+                      "] m): expected a region that overlaps them");
+    }
   }
   return bounds;
 }

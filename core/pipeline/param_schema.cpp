@@ -3,6 +3,7 @@
 #include <type_traits>
 
 #include "common/angles.h"
+#include "sonar/sonar_ranges.h"
 
 namespace sonarcarve {
 namespace {
@@ -95,10 +96,12 @@ constexpr ParamRange kAtLeastOne{.min = 1.0};
 // what any run needs (and above the panel's own bounds), and below what makes a run take
 // minutes or gigabytes (docs/reliability.md, "Limits"). Windows along a beam span at most the
 // longest beam.
-constexpr double kMaxSmoothingWindow = 255;       // a box of 255 x 255 pixels
 constexpr double kMaxCfarWindow = 16384;          // kMaxRangeBins
 constexpr double kMaxMeshSmoothingPasses = 1000;  // 1e8 ran past 60 s and took 2.4 GB
 constexpr double kMaxOccupancySigma = 100;        // voxels: the grid's border is 2 sigma
+// Physically meaningful ends (sonar/sonar_ranges.h): a map voxel of 10 m holds no structure a
+// sonar images; ranges within the farthest a sonar may declare.
+constexpr double kMaxVoxelSize_m = 10.0;
 
 // Designated initializers leave the fields they do not name at their defaults on purpose; GCC
 // 12 warns about each of them under -Wextra.
@@ -240,7 +243,7 @@ std::vector<ParamSpec> makeSchema() {
        .applies = usesFastEngine},
       {.key = "voxel_size_m",
        .unit = "m",
-       .range = kPositive,
+       .range = {.min = 0.0, .max = kMaxVoxelSize_m, .min_open = true},
        .help = "edge of a map voxel; also the mesh's sampling",
        .flag = "--voxel-size",
        .gui = {.group = "Carving",
@@ -269,7 +272,10 @@ std::vector<ParamSpec> makeSchema() {
       {.key = "vertical_aperture_deg",
        .unit = "degrees",
        .degrees = true,
-       .range = {.min = 0.0, .max = 180.0, .max_open = true},
+       .range = {.min = kVerticalAperture.min,
+                 .max = kVerticalAperture.max,
+                 .max_open = true,
+                 .or_zero = true},
        .help = "vertical aperture used for carving; 0 = the sonar's own",
        .flag = "--vertical-aperture",
        .gui = {.group = "Carving",
@@ -282,7 +288,7 @@ std::vector<ParamSpec> makeSchema() {
       {.key = "horizontal_beam_width_deg",
        .unit = "degrees",
        .degrees = true,
-       .range = {.min = 0.0, .max = 30.0},
+       .range = {.min = kHorizontalBeamWidth.min, .max = 30.0, .or_zero = true},
        .help = "each beam's -3 dB width in bearing, whose blur is taken out of the frames when "
                "wider than the beams' spacing; 0 = the sonar's own (none if it gives none)",
        .flag = "--horizontal-beam-width",
@@ -295,14 +301,14 @@ std::vector<ParamSpec> makeSchema() {
        .access = field([](auto& p) -> auto& { return p.horizontal_beam_width_rad; })},
       {.key = "range_min_m",
        .unit = "m",
-       .range = kNonNegative,
+       .range = {.min = 0.0, .max = kMaxFarRange_m},
        .help = "nearest range used; 0 = the sonar's own",
        .flag = "--range-min",
        .gui = {.group = "Carving", .label = "Range min", .max = 500, .step = 0.1, .suffix = " m"},
        .access = field([](auto& p) -> auto& { return p.carve.range_min_m; })},
       {.key = "range_max_m",
        .unit = "m",
-       .range = kNonNegative,
+       .range = {.min = 0.0, .max = kMaxFarRange_m},
        .help = "farthest range used, above range_min_m; 0 = the sonar's own",
        .flag = "--range-max",
        .gui = {.group = "Carving",

@@ -33,8 +33,9 @@ struct ParamRange {
   double max = std::numeric_limits<double>::infinity();
   bool min_open = false;
   bool max_open = false;
+  bool or_zero = false;  ///< 0 is valid too, outside the range: "0 = the sonar's own"
   bool contains(double shown) const;
-  /// "above 0", "at least 1", "from 0 to 0.95", "" when unbounded.
+  /// "above 0", "at least 1", "from 0 to 0.95", "0 or from 0.1 to 90", "" when unbounded.
   std::string describe() const;
 };
 

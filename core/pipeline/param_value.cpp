@@ -126,7 +126,7 @@ std::string expected(const ParamSpec& spec, const std::string& got) {
 bool ParamRange::contains(double shown) const {
   const bool above_min = min_open ? shown > min : shown >= min;
   const bool below_max = max_open ? shown < max : shown <= max;
-  return above_min && below_max;
+  return (above_min && below_max) || (or_zero && shown == 0.0);
 }
 
 std::string ParamRange::describe() const {
@@ -134,11 +134,14 @@ std::string ParamRange::describe() const {
   const bool has_max = std::isfinite(max);
   const std::string lower = (min_open ? "above " : "at least ") + shortestNumber(min);
   const std::string upper = (max_open ? "below " : "at most ") + shortestNumber(max);
+  std::string bounds;
   if (has_min && has_max) {
-    return !min_open && !max_open ? "from " + shortestNumber(min) + " to " + shortestNumber(max)
-                                  : lower + " and " + upper;
+    bounds = !min_open && !max_open ? "from " + shortestNumber(min) + " to " + shortestNumber(max)
+                                    : lower + " and " + upper;
+  } else {
+    bounds = has_min ? lower : has_max ? upper : "";
   }
-  return has_min ? lower : has_max ? upper : "";
+  return or_zero && !bounds.empty() ? "0 or " + bounds : bounds;
 }
 
 std::string describeAccepted(const ParamSpec& spec) {

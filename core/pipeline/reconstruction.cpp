@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "common/available_memory.h"
+#include "common/error.h"
+#include "common/number_text.h"
 #include "denoise/noise_model.h"
 #include "pipeline/run_context.h"
 
@@ -69,6 +71,24 @@ std::vector<std::size_t> selectedFrames(const Mission& mission,
 
 std::vector<std::size_t> placedFrames(const Mission& mission, const ReconstructionParams& params) {
   return indicesOf(placeFrames(mission, frameSelection(params), [](const FrameProblem&) {}));
+}
+
+void Pipeline::startFrom(std::shared_ptr<const VoxelMap> earlier_map, bool carve_frames,
+                         const std::string& source) {
+  if (params_.engine != Engine::Fast) {
+    throw Error(source, "engine",
+                "a run can start from a saved map with the fast engine only, not " +
+                    std::string(toString(params_.engine)) + ": expected --engine fast");
+  }
+  if (earlier_map->voxelSize() != params_.carve.voxel_size_m) {
+    throw Error(source, "voxel_size_m",
+                "the map has voxels of " + shortestNumber(earlier_map->voxelSize()) +
+                    " m, this run carves " + shortestNumber(params_.carve.voxel_size_m) +
+                    " m: expected the same voxel size (--voxel-size " +
+                    shortestNumber(earlier_map->voxelSize()) + ")");
+  }
+  earlier_map_ = std::move(earlier_map);
+  carve_frames_ = carve_frames;
 }
 
 void RunContext::skip(const FrameProblem& problem) {

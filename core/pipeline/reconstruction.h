@@ -79,10 +79,10 @@ class Pipeline {
   /// run's frames carve into it, and the surface is resolved over this run's frames.
   /// With `carve_frames` false the frames only resolve the loaded map's surface (the last
   /// step of a sharded run, docs/scaling.md).
-  void startFrom(std::shared_ptr<const VoxelMap> earlier_map, bool carve_frames = true) {
-    earlier_map_ = std::move(earlier_map);
-    carve_frames_ = carve_frames;
-  }
+  /// Throws Error naming `source` (the map's file) when this run cannot start from it: another
+  /// engine than the fast one, or voxels of another size than voxel_size_m.
+  void startFrom(std::shared_ptr<const VoxelMap> earlier_map, bool carve_frames = true,
+                 const std::string& source = "the earlier map");
   /// Keeps the whole carved map to the end (reconstruct --save-map writes it): no eviction.
   void keepWholeMap() { keep_whole_map_ = true; }
   /// Adds a stage after the one named `after` (at the end when empty or not found).

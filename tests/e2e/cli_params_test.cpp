@@ -44,7 +44,8 @@ TEST(CliParams, ABadFlagValueNamesTheFlag) {
     EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "out")) << flags;
   };
-  expectRefused("--voxel-size -0.1", "--voxel-size: expected a number, above 0, got -0.1");
+  expectRefused("--voxel-size -0.1",
+                "--voxel-size: expected a number, above 0 and at most 10, got -0.1");
   // The schema's range, as the panel and a params YAML have it: 1e8 smoothing passes ran past
   // 60 s and took 2.4 GB.
   expectRefused("--mesh-smoothing 100000000",

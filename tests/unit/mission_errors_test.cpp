@@ -75,7 +75,7 @@ TEST_F(MissionErrors, MissingOrInvalidSonarFields) {
 
 TEST_F(MissionErrors, InvalidSonarValue) {
   edit("mission.yaml", "resolution_m: 0.025", "resolution_m: -0.025");
-  expectReadError({"mission.yaml", "sonar.range.resolution_m: expected a positive number"});
+  expectReadError({"mission.yaml", "sonar.range.resolution_m: expected 1e-04 to 10 m, got -0.025"});
 }
 
 TEST_F(MissionErrors, InvalidIntensityScale) {
@@ -84,10 +84,10 @@ TEST_F(MissionErrors, InvalidIntensityScale) {
       {"{scale: decibels, full_scale_db: 80, full_scale_count: 255}",
        "sonar.intensity.scale: expected 'linear', 'decibel' or 'gamma'"},
       {"{scale: gamma, gamma: 12, full_scale_count: 255}",
-       "sonar.intensity.gamma: expected a gamma over 0 and at most 10, got 12"},
+       "sonar.intensity.gamma: expected 0.01 to 10, got 12"},
       {"{scale: gamma, gamma: 0.5}", "sonar.intensity.full_scale_count: missing"},
       {"{scale: decibel, full_scale_db: 0, full_scale_count: 255}",
-       "sonar.intensity.full_scale_db: expected a positive number"},
+       "sonar.intensity.full_scale_db: expected 1 to 200 dB, got 0"},
       {"{scale: decibel, full_scale_db: 80}", "sonar.intensity.full_scale_count: missing"},
       {"logarithmic", "sonar.intensity: expected 'linear' or a mapping"}};
   for (const auto& [intensity, message] : cases) {
@@ -111,9 +111,10 @@ TEST_F(MissionErrors, InvalidIntensityScale) {
 TEST_F(MissionErrors, InvalidHorizontalBeamWidth) {
   const std::string original = readText(mission_ / "mission.yaml");
   const std::pair<std::string, std::string> cases[] = {
-      {"-1", "sonar.horizontal_beam_width_deg: expected a positive number"},
+      {"-1", "sonar.horizontal_beam_width_deg: expected 0.01 to 360 (excluded) degrees, got -1"},
       {"wide", "sonar.horizontal_beam_width_deg: expected a finite number"},
-      {"400", "sonar.horizontal_beam_width_deg: expected less than the field of view"}};
+      {"400", "sonar.horizontal_beam_width_deg: expected 0.01 to 360 (excluded) degrees"},
+      {"100", "sonar.horizontal_beam_width_deg: expected less than the field of view"}};
   for (const auto& [width, message] : cases) {
     writeText(mission_ / "mission.yaml", original);
     edit("mission.yaml", "vertical_aperture_deg:",

@@ -21,7 +21,11 @@ ParamValue otherValue(const ParamSpec& spec, const std::filesystem::path& dir) {
     case ParamType::Number: {
       const double shown = spec.toShown(std::get<double>(value));
       const double up = shown + 0.01;
-      return spec.fromShown(spec.range.contains(up) ? up : shown - 0.01);
+      const double down = shown - 0.01;
+      // A default of 0 beside a range that starts higher ("0 = the sonar's own"): its start.
+      return spec.fromShown(spec.range.contains(up)     ? up
+                            : spec.range.contains(down) ? down
+                                                        : spec.range.min);
     }
     case ParamType::Integer: {
       const long long v = std::get<long long>(value);
@@ -170,9 +174,9 @@ TEST_F(ParamsYamlErrors, OutOfRangeValues) {
   EXPECT_EQ(errorOf("mesh: {occupancy_sigma_voxels: 1e6}\n"),
             at(1, "mesh.occupancy_sigma_voxels") +
                 "expected a number, above 0 and at most 100, got 1e+06");
-  EXPECT_EQ(
-      errorOf("vertical_aperture_deg: 200\n"),
-      at(1, "vertical_aperture_deg") + "expected a number, at least 0 and below 180, got 200");
+  EXPECT_EQ(errorOf("vertical_aperture_deg: 200\n"),
+            at(1, "vertical_aperture_deg") +
+                "expected a number, 0 or at least 0.1 and below 180, got 200");
 }
 
 TEST_F(ParamsYamlErrors, WrongTypesOfEveryKind) {
@@ -187,7 +191,7 @@ TEST_F(ParamsYamlErrors, WrongTypesOfEveryKind) {
   EXPECT_EQ(errorOf("detector: {mode: probability}\n"),
             at(1, "detector.mode") + "expected auto, none, ztest or cfar, got 'probability'");
   EXPECT_EQ(errorOf("voxel_size_m: [1, 2]\n"),
-            at(1, "voxel_size_m") + "expected a number, above 0");
+            at(1, "voxel_size_m") + "expected a number, above 0 and at most 10");
 }
 
 TEST_F(ParamsYamlErrors, ChecksAcrossKeysPointAtALine) {

@@ -6,17 +6,22 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "common/error.h"
+#include "common/number_text.h"
 #include "io/aris/aris_file.h"
 #include "io/aris/aris_lens.h"
 #include "io/frame_source.h"
 #include "io/import.h"
 #include "sonar/attitude.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 namespace {
 
 // ARIS files do not state the elevation beam width; the ARIS lenses' is about 14 degrees.
 constexpr double kArisVerticalApertureDeg = 14.0;
+// A heading, pitch or roll of a frame header beyond a turn either way is not an attitude.
+constexpr double kMaxAngleDeg = 360.0;
 
 // ARIS samples are logarithmic: bytes 0..255 span 0..80 dB (the ARIS file SDK's
 // docs/understanding-aris-data.md). loadFrame gives them as power.
@@ -54,10 +59,28 @@ bool hasVehicleFields(const ArisFile& file) {
   return false;
 }
 
+// A vehicle field of frame `k`'s header must be a number within `limit` of zero (a depth
+// within the navigation's bound, an angle within a turn); the error names the file, the frame
+// and the field.
+void requireField(const std::filesystem::path& path, std::size_t k, const char* field, float value,
+                  double limit, const char* unit) {
+  if (!(std::abs(value) <= limit)) {
+    throw Error(path.string(), "frame " + std::to_string(k),
+                std::string("vehicle field ") + field + " is " + shortestNumber(value) +
+                    ": expected a number within +-" + shortestNumber(limit) + " " + unit);
+  }
+}
+
 // The vehicle fields as a track (frames whose time does not increase are left out).
-NavTrack vehicleTrack(const ArisFile& file, double time_offset_s) {
+NavTrack vehicleTrack(const ArisFile& file, const std::filesystem::path& path,
+                      double time_offset_s) {
   std::vector<NavSample> samples;
-  for (const ArisFrameInfo& f : file.frames()) {
+  for (std::size_t k = 0; k < file.frames().size(); ++k) {
+    const ArisFrameInfo& f = file.frames()[k];
+    requireField(path, k, "Depth", f.depth_m, kMaxNavCoordinate_m, "m");
+    requireField(path, k, "Heading", f.heading_deg, kMaxAngleDeg, "degrees");
+    requireField(path, k, "Pitch", f.pitch_deg, kMaxAngleDeg, "degrees");
+    requireField(path, k, "Roll", f.roll_deg, kMaxAngleDeg, "degrees");
     const double t = f.time_us * 1e-6 + time_offset_s;
     if (!samples.empty() && t <= samples.back().time_s) {
       continue;
@@ -100,7 +123,7 @@ Mission openArisFile(const std::filesystem::path& path, const OpenOptions& optio
                                "with --aperture-deg");
   }
   if (options.nav_csv.empty() && hasVehicleFields(*file)) {
-    mission.nav = vehicleTrack(*file, options.time_offset_s);
+    mission.nav = vehicleTrack(*file, path, options.time_offset_s);
     mission.nav_file = path.filename().string() + " (frame headers: depth, heading, pitch, roll)";
   } else if (options.nav_csv.empty()) {
     mission.warnings.push_back(

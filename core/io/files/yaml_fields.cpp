@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <map>
 
 #include "common/angles.h"
 #include "common/error.h"
@@ -21,7 +22,35 @@ YAML::Node YamlFields::parse(const std::string& text) const {
   } catch (const YAML::Exception& e) {
     throw Error(file_, linePlace(e.mark.line + 1), "not valid YAML: " + e.msg);
   }
+  requireUniqueKeys(root);
   return mapping(root);
+}
+
+void YamlFields::requireUniqueKeys(const YAML::Node& node, const std::string& path) const {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      requireUniqueKeys(node[i], path + "[" + std::to_string(i) + "]");
+    }
+    return;
+  }
+  if (!node.IsMap()) {
+    return;
+  }
+  std::map<std::string, int> first_line;
+  for (const auto& entry : node) {
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
+    const std::string full = path.empty() ? key : path + "." + key;
+    const int line = entry.first.Mark().line + 1;
+    if (!key.empty()) {
+      const auto [at, fresh] = first_line.emplace(key, line);
+      if (!fresh) {
+        throw Error(file_, linePlace(line),
+                    full + ": the key appears twice (first on line " + std::to_string(at->second) +
+                        "): expected each key once");
+      }
+    }
+    requireUniqueKeys(entry.second, full);
+  }
 }
 
 YAML::Node YamlFields::mapping(const YAML::Node& root) const {

@@ -19,6 +19,9 @@ class YamlFields {
   YAML::Node load() const;
   /// The same for YAML text embedded in the file (errors still name the file).
   YAML::Node parse(const std::string& text) const;
+  /// Throws Error naming the file, the line and the key when a mapping under `node` holds a
+  /// key twice (YAML forbids it; yaml-cpp keeps both, and readers took the first or the last).
+  void requireUniqueKeys(const YAML::Node& node, const std::string& path = "") const;
 
   /// Child `key` of the mapping `node` (whose dotted name is `path`); throws if missing.
   YAML::Node child(const YAML::Node& node, const std::string& path, const std::string& key) const;

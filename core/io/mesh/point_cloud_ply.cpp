@@ -133,6 +133,15 @@ class PlyValues {
     value = decode(bytes, type, swap_);
     return true;
   }
+  /// Whether anything but white space (ASCII) or any byte (binary) is left.
+  bool more() {
+    if (ascii_) {
+      in_ >> std::ws;
+    }
+    return in_.peek() != std::char_traits<char>::eof();
+  }
+  /// The byte reached, from the file's start.
+  std::uint64_t offset() { return static_cast<std::uint64_t>(in_.tellg()); }
 
  private:
   std::istream& in_;
@@ -246,6 +255,29 @@ Triangles readFaces(const std::string& file, const PlyElement& element, std::siz
   return triangles;
 }
 
+// Reads the elements after the first `read` ones, then requires the end of the file: data past
+// what the header declares means its counts are wrong (a header declaring 5 faces where 12 are
+// stored was read as 5 faces, silently).
+void requireNoMoreData(const std::string& file, const PlyHeader& header, std::size_t read,
+                       PlyValues& values) {
+  for (std::size_t e = read; e < header.elements.size(); ++e) {
+    const PlyElement& element = header.elements[e];
+    for (std::uint64_t k = 0; k < element.count; ++k) {
+      readCorners(file, element.name + " " + std::to_string(k), element, values);
+    }
+  }
+  if (values.more()) {
+    std::string counts;
+    for (const PlyElement& element : header.elements) {
+      counts += (counts.empty() ? "" : ", ") + element.name + " " + std::to_string(element.count);
+    }
+    throw Error(file, bytePlace(values.offset()),
+                "data goes on past the elements the header declares (" + counts +
+                    "): expected the file to end there (do the header's counts match the "
+                    "data?)");
+  }
+}
+
 PlyMesh readPly(const std::filesystem::path& path, bool with_faces,
                 const Eigen::Vector3d& origin_ned_m) {
   const std::string file = path.string();
@@ -265,6 +297,7 @@ PlyMesh readPly(const std::filesystem::path& path, bool with_faces,
     }
     mesh.triangles = readFaces(file, header.elements[1], mesh.vertices.positions.size(), values);
   }
+  requireNoMoreData(file, header, with_faces ? 2 : 1, values);
   return mesh;
 }
 

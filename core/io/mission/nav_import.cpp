@@ -320,6 +320,7 @@ NavMapping parseNavMapping(std::string_view text, const std::string& source) {
   } catch (const YAML::Exception& e) {
     throw Error(source, linePlace(e.mark.line + 1), "not valid YAML: " + e.msg);
   }
+  fields.requireUniqueKeys(root);
   return mappingFromYaml(root, fields, source);
 }
 

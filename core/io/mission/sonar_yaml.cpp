@@ -1,11 +1,30 @@
 #include "io/mission/sonar_yaml.h"
 
+#include <optional>
+
 #include "common/angles.h"
 #include "common/error.h"
 #include "sonar/mission_origin.h"
+#include "sonar/sonar_ranges.h"
 
 namespace sonarcarve {
 namespace {
+
+// A number within its physically meaningful range; an error names the file, the line, the
+// key and the range.
+double physical(const YamlFields& fields, const YAML::Node& node, const std::string& path,
+                const PhysicalRange& range) {
+  const double value = fields.number(node, path);
+  if (const auto problem = outsideRange(value, range)) {
+    fields.fail(node, path, *problem);
+  }
+  return value;
+}
+
+double physicalChild(const YamlFields& fields, const YAML::Node& node, const std::string& path,
+                     const std::string& key, const PhysicalRange& range) {
+  return physical(fields, fields.child(node, path, key), path + "." + key, range);
+}
 
 BearingTable bearingsFromYaml(const YAML::Node& node, const YamlFields& fields,
                               const std::string& path) {
@@ -15,12 +34,15 @@ BearingTable bearingsFromYaml(const YAML::Node& node, const YamlFields& fields,
   try {
     if (node["table_deg"]) {
       std::vector<double> centres = fields.numbers(node["table_deg"], path + ".table_deg");
-      for (double& c : centres) {
-        c = degToRad(c);
+      for (std::size_t j = 0; j < centres.size(); ++j) {
+        if (const auto problem = outsideRange(centres[j], kBearing)) {
+          fields.fail(node["table_deg"], path + ".table_deg[" + std::to_string(j) + "]", *problem);
+        }
+        centres[j] = degToRad(centres[j]);
       }
       return BearingTable::fromCentres(std::move(centres));
     }
-    const double fov = fields.positive(fields.child(node, path, "fov_deg"), path + ".fov_deg");
+    const double fov = physicalChild(fields, node, path, "fov_deg", kFieldOfView);
     const int beams = fields.positiveInt(fields.child(node, path, "beams"), path + ".beams");
     return BearingTable::uniform(degToRad(fov), beams);
   } catch (const Error& e) {
@@ -56,9 +78,9 @@ IntensityScale intensityFromYaml(const YAML::Node& node, const YamlFields& field
   }
   if (name == "gamma") {
     const YAML::Node gamma = fields.child(node, path, "gamma");
-    const double exponent = fields.positive(gamma, path + ".gamma");
+    const double exponent = physical(fields, gamma, path + ".gamma", kGammaExponent);
     const double full_scale =
-        fields.positive(fields.child(node, path, "full_scale_count"), path + ".full_scale_count");
+        physicalChild(fields, node, path, "full_scale_count", kFullScaleCount);
     try {
       return IntensityScale::gamma(exponent, full_scale);
     } catch (const Error& e) {
@@ -69,8 +91,8 @@ IntensityScale intensityFromYaml(const YAML::Node& node, const YamlFields& field
     fields.fail(scale, path + ".scale", "expected 'linear', 'decibel' or 'gamma'");
   }
   return IntensityScale::decibel(
-      fields.positive(fields.child(node, path, "full_scale_db"), path + ".full_scale_db"),
-      fields.positive(fields.child(node, path, "full_scale_count"), path + ".full_scale_count"));
+      physicalChild(fields, node, path, "full_scale_db", kFullScaleDb),
+      physicalChild(fields, node, path, "full_scale_count", kFullScaleCount));
 }
 
 void emitIntensity(YAML::Emitter& out, const IntensityScale& scale) {
@@ -96,21 +118,14 @@ SonarModel sonarFromYaml(const YAML::Node& node, const YamlFields& fields,
   const YAML::Node range_node = fields.child(node, path, "range");
   const std::string rp = path + ".range";
   RangeBins range;
-  range.min_m = fields.number(fields.child(range_node, rp, "min_m"), rp + ".min_m");
-  if (range.min_m < 0.0) {
-    fields.fail(range_node["min_m"], rp + ".min_m", "expected a number >= 0");
-  }
-  range.resolution_m =
-      fields.positive(fields.child(range_node, rp, "resolution_m"), rp + ".resolution_m");
+  range.min_m = physicalChild(fields, range_node, rp, "min_m", kNearRange);
+  range.resolution_m = physicalChild(fields, range_node, rp, "resolution_m", kRangeResolution);
   range.count = fields.positiveInt(fields.child(range_node, rp, "bins"), rp + ".bins");
-
   BearingTable bearings =
       bearingsFromYaml(fields.child(node, path, "bearings"), fields, path + ".bearings");
   const YAML::Node aperture_node = fields.child(node, path, "vertical_aperture_deg");
-  const double aperture_deg = fields.positive(aperture_node, path + ".vertical_aperture_deg");
-  if (aperture_deg >= 180.0) {
-    fields.fail(aperture_node, path + ".vertical_aperture_deg", "expected less than 180");
-  }
+  const double aperture_deg =
+      physical(fields, aperture_node, path + ".vertical_aperture_deg", kVerticalAperture);
   ElevationBeam beam = ElevationBeam::MainLobe;
   if (node["beam_pattern"]) {
     const std::string pattern = fields.text(node["beam_pattern"], path + ".beam_pattern");
@@ -126,20 +141,31 @@ SonarModel sonarFromYaml(const YAML::Node& node, const YamlFields& fields,
       intensityFromYaml(node["intensity"], fields, path + ".intensity");
   double beam_width_deg = 0.0;
   if (const YAML::Node width = node["horizontal_beam_width_deg"]) {
-    beam_width_deg = fields.positive(width, path + ".horizontal_beam_width_deg");
+    beam_width_deg =
+        physical(fields, width, path + ".horizontal_beam_width_deg", kHorizontalBeamWidth);
     if (degToRad(beam_width_deg) >= bearings.fieldOfView()) {
       fields.fail(width, path + ".horizontal_beam_width_deg",
                   "expected less than the field of view");
     }
   }
+  std::optional<SonarModel> sonar;
   try {
-    return SonarModel(id, range, std::move(bearings), degToRad(aperture_deg))
-        .withElevationBeam(beam)
-        .withHorizontalBeamWidth(degToRad(beam_width_deg))
-        .withIntensityScale(intensity);
+    sonar = SonarModel(id, range, std::move(bearings), degToRad(aperture_deg))
+                .withElevationBeam(beam)
+                .withHorizontalBeamWidth(degToRad(beam_width_deg))
+                .withIntensityScale(intensity);
   } catch (const Error& e) {
     fields.fail(node, path, e.place() + ": " + e.message());
   }
+  // After the model's own checks, which bound the bins.
+  if (range.maxRange() > kMaxFarRange_m) {
+    fields.fail(range_node, rp,
+                "reaches " + shortestNumber(range.maxRange()) +
+                    " m (min_m + bins x resolution_m): expected at most " +
+                    shortestNumber(kMaxFarRange_m) + " m");
+  }
+
+  return *sonar;
 }
 
 void emitSonar(YAML::Emitter& out, const SonarModel& sonar) {
@@ -190,6 +216,12 @@ Mounting mountingFromYaml(const YAML::Node& node, const YamlFields& fields,
   }
   const auto r = fields.numbers(fields.child(node, path, "roll_pitch_yaw_deg"),
                                 path + ".roll_pitch_yaw_deg", 3);
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    if (const auto problem = outsideRange(r[k], kMountingAngle)) {
+      fields.fail(node["roll_pitch_yaw_deg"],
+                  path + ".roll_pitch_yaw_deg[" + std::to_string(k) + "]", *problem);
+    }
+  }
   m.rpy = RollPitchYaw{degToRad(r[0]), degToRad(r[1]), degToRad(r[2])};
   return m;
 }

@@ -3,6 +3,7 @@
 // is read) and the buffers the run will hold, checked against its memory budget.
 #include "carve/occupancy_export.h"
 #include "common/error.h"
+#include "common/number_text.h"
 #include "pipeline/run_context.h"
 #include "pipeline/stages/standard_stages.h"
 
@@ -33,16 +34,38 @@ void noteOctoMapReach(RunContext& run) {
   run.choose(choice);
 }
 
+std::string timeSpan(double from_s, double to_s) {
+  return "t = " + shortestNumber(from_s) + " to " + shortestNumber(to_s) + " s";
+}
+
+// A selection of frames that holds none is the parameters' fault, not the navigation's.
+void requireSelectedFrames(const Mission& mission, const ReconstructionParams& p) {
+  const std::size_t count = mission.frames.size();
+  if (!selectFrames(count, frameSelection(p)).empty()) {
+    return;
+  }
+  const std::string last = p.last_frame < 0 ? "the end" : std::to_string(p.last_frame);
+  throw Error("parameters", "frames",
+              "the selection from frame " + std::to_string(p.first_frame) + " to " + last +
+                  " (exclusive) holds none of the mission's " + std::to_string(count) +
+                  " frames: expected frames.first (--first-frame) below " + std::to_string(count) +
+                  " and below frames.last (--last-frame)");
+}
+
 class ReadStage : public Stage {
  public:
   ReadStage() : Stage("read", 0.01) {}
 
   void run(RunContext& run, Progress&) const override {
     const ReconstructionParams& p = run.params;
+    requireSelectedFrames(run.mission, p);
     run.posed = placeFrames(run.mission, frameSelection(p),
                             [&run](const FrameProblem& problem) { run.skip(problem); });
     if (run.posed.empty()) {
-      throw Error(run.mission.folder.string(), "", "no frame can be placed in the world");
+      throw Error(run.mission.folder.string(), "navigation",
+                  "no selected frame lies within the navigation track (" +
+                      timeSpan(run.mission.nav.startTime(), run.mission.nav.endTime()) +
+                      "): expected frame times on the navigation's clock (--time-offset)");
     }
     run.carving = {p.engine,          p.carve,         p.occlusion_aware_carving,
                    p.pose_refinement, run.earlier_map, run.carve_frames};

@@ -39,6 +39,32 @@ RunChoice emptySurfaceChoice(const RunContext& run) {
   return choice;
 }
 
+// Fewer surface points than the frames that carved it, or than one frame's beams: a structure
+// the frames image leaves a point on every beam that sees it in enough views, so so few points
+// mean that the views hardly agree anywhere (the navigation, its clock or the sonar's declared
+// geometry). A structure seen by a few beams only gives this warning too: it asks for a look.
+std::size_t nearlyEmptyBelow(const RunContext& run) {
+  return std::max(run.result.frames_used, static_cast<std::size_t>(run.sonar.cols()));
+}
+
+RunChoice nearlyEmptySurfaceChoice(const RunContext& run) {
+  RunChoice choice;
+  choice.name = "surface";
+  choice.value = "nearly empty";
+  choice.warning = true;
+  choice.reason =
+      "the views agree on almost no surface: " + std::to_string(run.result.surface.size()) +
+      " points from " + std::to_string(run.result.frames_used) + " frames of " +
+      std::to_string(run.sonar.cols()) + " beams, fewer than one a frame or than one frame's beams";
+  choice.action =
+      "check the navigation (its offsets, its clock: --time-offset) and the sonar's declared "
+      "geometry; lower min_views";
+  choice.detail = std::to_string(run.result.occupied_voxels) + " occupied voxels after carving " +
+                  std::to_string(run.result.frames_used) + " frames; min_views " +
+                  std::to_string(run.params.min_views);
+  return choice;
+}
+
 class SurfaceStage : public Stage {
  public:
   SurfaceStage() : Stage("surface", 0.2) {}
@@ -65,6 +91,9 @@ class SurfaceStage : public Stage {
     }
     if (run.result.surface.empty()) {
       run.choose(emptySurfaceChoice(run));
+    } else if (run.result.surface.size() < nearlyEmptyBelow(run) && !run.params.carve.region) {
+      // (a region of interest may hold little on purpose)
+      run.choose(nearlyEmptySurfaceChoice(run));
     } else if (!run.first_surface.empty() && run.first_surface_frames >= kFirstSurfaceMinFrames) {
       run.choose(firstSurfaceKeptChoice(firstSurfaceKept(
           run.first_surface, positionsOf(run.result.surface), run.carving.carve.voxel_size_m)));

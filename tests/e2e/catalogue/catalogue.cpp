@@ -91,6 +91,12 @@ void runCatalogueCase(const CatalogueCase& c) {
   EXPECT_LE(usage.ru_maxrss, kMemoryLimitKib) << "memory peak (KiB) of " << context;
 }
 
+void runCliIn(const Workspace& ws, const std::string& args) {
+  const RunResult made =
+      runShell("cd " + quoted(ws.root()) + " && '" + SONARCARVE_CLI + "' " + args + " 2>&1");
+  EXPECT_EQ(made.exit_code, 0) << args << ": " << made.output;
+}
+
 void writePrevious(const std::filesystem::path& path) {
   writeBytes(path, kPreviousContent);
 }

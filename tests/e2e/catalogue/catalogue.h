@@ -68,8 +68,12 @@ std::vector<CatalogueCase> readerCases();
 std::vector<CatalogueCase> bagCases();
 std::vector<CatalogueCase> geoCases();
 std::vector<CatalogueCase> boundCases();
+std::vector<CatalogueCase> senseCases();
+std::vector<CatalogueCase> messageCases();
 
 // Inputs for the cases.
+/// Runs `sonarcarve-cli ARGS` in the workspace to make an input, and expects it to succeed.
+void runCliIn(const Workspace& ws, const std::string& args);
 inline constexpr const char* kPreviousContent = "a file of an earlier run\n";
 void writePrevious(const std::filesystem::path& path);
 void writeBytes(const std::filesystem::path& path, const std::string& bytes);

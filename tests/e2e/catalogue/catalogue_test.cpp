@@ -24,6 +24,8 @@ INSTANTIATE_TEST_SUITE_P(Readers, Catalogue, ::testing::ValuesIn(readerCases()),
 INSTANTIATE_TEST_SUITE_P(Bags, Catalogue, ::testing::ValuesIn(bagCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Geo, Catalogue, ::testing::ValuesIn(geoCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Bounds, Catalogue, ::testing::ValuesIn(boundCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Sense, Catalogue, ::testing::ValuesIn(senseCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(Messages, Catalogue, ::testing::ValuesIn(messageCases()), nameOf);
 
 }  // namespace
 }  // namespace sonarcarve::test

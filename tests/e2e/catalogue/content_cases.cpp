@@ -123,7 +123,8 @@ std::vector<CatalogueCase> contentCases() {
              writeBytes(ws / "params.yaml", std::string(kBom) + "voxel_size_m: -1\n");
              return std::string("reconstruct mission --params params.yaml --out out");
            },
-       .message = {"params.yaml: line 1: voxel_size_m: expected a number, above 0, got -1"},
+       .message =
+           {"params.yaml: line 1: voxel_size_m: expected a number, above 0 and at most 10, got -1"},
        .absent = {"out"}},
       {.name = "ByteOrderMarkInRecordingNav",
        .prepare =

@@ -134,16 +134,15 @@ std::vector<CatalogueCase> readerCases() {
                {"params.yaml: expected a YAML mapping of keys"}, Outcome::Fails, {"out"}),
       replaced("NoiseModelEmpty", "noise.yaml", empty,
                "reconstruct mission --noise-model noise.yaml --out out",
-               {"noise.yaml: corrupt noise model"}, Outcome::Fails, {"out"}),
+               {"noise.yaml: cannot read the noise model (empty or not YAML)"}, Outcome::Fails,
+               {"out"}),
       replaced("NoiseModelBinary", "noise.yaml", binary,
                "reconstruct mission --noise-model noise.yaml --out out",
                {"noise.yaml: corrupt noise model"}, Outcome::Fails, {"out"}),
       {.name = "NoiseModelCutInTheMiddle",
        .prepare =
            [](const Workspace& ws) {
-             const RunResult made = runShell("cd " + quoted(ws.root()) + " && '" + SONARCARVE_CLI +
-                                             "' noise-model mission --out whole.yaml 2>&1");
-             EXPECT_EQ(made.exit_code, 0) << made.output;
+             runCliIn(ws, "noise-model mission --out whole.yaml");
              const std::string whole = readText(ws / "whole.yaml");
              writeBytes(ws / "noise.yaml", whole.substr(0, whole.size() / 2));
              return std::string("reconstruct mission --noise-model noise.yaml --out out");
