@@ -94,7 +94,9 @@ class SurfaceStage : public Stage {
     } else if (run.result.surface.size() < nearlyEmptyBelow(run) && !run.params.carve.region) {
       // (a region of interest may hold little on purpose)
       run.choose(nearlyEmptySurfaceChoice(run));
-    } else if (!run.first_surface.empty() && run.first_surface_frames >= kFirstSurfaceMinFrames) {
+    }
+    if (!run.result.surface.empty() && !run.first_surface.empty() &&
+        run.first_surface_frames >= kFirstSurfaceMinFrames) {
       run.choose(firstSurfaceKeptChoice(firstSurfaceKept(
           run.first_surface, positionsOf(run.result.surface), run.carving.carve.voxel_size_m)));
     }
