@@ -79,6 +79,18 @@ inline double effectiveKeepLevel(const CarveParams& params) {
   return std::max(params.keep_level, params.dark_pixel_level / kGainAtApertureEdge);
 }
 
+/// Sets `params` as a run carves: the keep level `measured` (from the mission's bright returns),
+/// what a dark pixel means (exact, no detector ran; or below detection) and the sonar's dark
+/// power, then the keep level raised as effectiveKeepLevel says.
+inline void setKeepLevel(CarveParams& params, double measured, bool dark_is_exact,
+                         double dark_power) {
+  params.keep_level = measured;
+  params.dark_pixels =
+      dark_is_exact ? CarveParams::DarkPixels::Exact : CarveParams::DarkPixels::BelowDetection;
+  params.dark_pixel_level = dark_power;
+  params.keep_level = effectiveKeepLevel(params);
+}
+
 /// Whether a map carved with `params` keeps each voxel's view and vote counts (2 bytes a
 /// voxel more in every block that holds values).
 inline bool keepsViewCounts(const CarveParams& params) {

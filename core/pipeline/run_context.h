@@ -44,7 +44,9 @@ struct RunContext {
   NoiseChoice noise{};              ///< denoise
   /// beam check: up to 4,000 points of a first surface carved inside the aperture
   std::vector<Eigen::Vector3f> first_surface{};
-  std::size_t first_surface_frames = 0;               ///< the frames it was carved from
+  std::size_t first_surface_frames = 0;  ///< the frames it was carved from
+  /// beam check: the keep level measured on the mission's frames, which choose then uses
+  std::optional<KeepLevel> measured_keep_level{};
   std::optional<DenoisedFrames> frames{};             ///< denoise: what carving reads
   CarveStageResult carved{};                          ///< carve
   std::optional<EvictingSurface> evicting_surface{};  ///< carve, in an evicting run

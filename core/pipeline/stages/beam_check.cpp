@@ -20,7 +20,8 @@ namespace sonarcarve {
 namespace {
 
 constexpr std::size_t kCheckFrames = 24;
-// The reach follows this many points of the first surface through this many views.
+// The first surface keeps this many points (for the reach and the surface stage's check); the
+// reach follows them through this many views.
 constexpr std::size_t kReachPoints = 4000;
 constexpr std::size_t kReachFrames = 48;
 
@@ -93,10 +94,10 @@ class BeamCheckStage : public Stage {
   }
 
  private:
-  // How far off the axis carving goes (pipeline/beam_reach.h): the first surface followed
-  // through up to kReachFrames views spread over the frames that can see it, at the keep level
-  // the choose stage measures. Only where a dark pixel is exact: behind a detector every frame
-  // carves inside the aperture.
+  // How far off the axis carving goes (pipeline/beam_reach.h): the first surface (up to
+  // kReachPoints points) followed through up to kReachFrames views spread over the frames that
+  // can see it, at the run's keep level (measured here once; the choose stage uses it). Only where
+  // a dark pixel is exact: behind a detector every frame carves inside the aperture.
   static void findReach(RunContext& run, const std::vector<Eigen::Vector3f>& points,
                         Progress& progress) {
     if (!darkPixelsAreExact(run.noise.detector) || points.empty()) {
@@ -104,11 +105,10 @@ class BeamCheckStage : public Stage {
     }
     const std::vector<PosedFrame> views = framesThatMaySee(run, points);
     CarveParams carve = run.carving.carve;  // as the choose stage will make it
-    carve.dark_pixels = CarveParams::DarkPixels::Exact;
-    carve.dark_pixel_level = run.sonar.intensityScale().darkPower();
-    carve.keep_level =
-        measureKeepLevel(*run.frames, run.posed, carve.dynamic_range_db, progress).level;
-    const double keep = effectiveKeepLevel(carve);
+    run.measured_keep_level =
+        measureKeepLevel(*run.frames, run.posed, carve.dynamic_range_db, progress);
+    setKeepLevel(carve, run.measured_keep_level->level, true,
+                 run.sonar.intensityScale().darkPower());
     const auto image = [&](std::size_t i) -> std::optional<cv::Mat> {
       try {
         return run.frames->load(views[i].index).image;
@@ -116,14 +116,9 @@ class BeamCheckStage : public Stage {
         return std::nullopt;
       }
     };
-    const std::size_t step = std::max<std::size_t>(1, points.size() / kReachPoints);
-    std::vector<Eigen::Vector3f> some;
-    for (std::size_t p = 0; p < points.size(); p += step) {
-      some.push_back(points[p]);
-    }
     const ElevationReach reach = reachFromFates(
-        followPoints(some, views, image, run.sonar, keep), 0.5 * run.sonar.verticalAperture(),
-        SincSquaredBeam(run.sonar.verticalAperture()).null(1));
+        followPoints(points, views, image, run.sonar, carve.keep_level),
+        0.5 * run.sonar.verticalAperture(), SincSquaredBeam(run.sonar.verticalAperture()).null(1));
     run.choose(elevationReachChoice(reach));
     if (reach.shortened()) {
       run.sonar = run.sonar.withElevationReach(reach.reach_rad);

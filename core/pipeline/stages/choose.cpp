@@ -26,16 +26,14 @@ class ChooseStage : public Stage {
       return;
     }
     KeepLevel& level = run.result.keep_level;
-    level = measureKeepLevel(*run.frames, run.posed, carve.dynamic_range_db, progress);
-    carve.keep_level = level.level;
+    level = run.measured_keep_level
+                ? *run.measured_keep_level
+                : measureKeepLevel(*run.frames, run.posed, carve.dynamic_range_db, progress);
     level.unit = run.sonar.intensityScale().isLinear() ? "counts" : "power";
-    carve.dark_pixels = darkPixelsAreExact(run.noise.detector)
-                            ? CarveParams::DarkPixels::Exact
-                            : CarveParams::DarkPixels::BelowDetection;
-    carve.dark_pixel_level = run.sonar.intensityScale().darkPower();
-    const double used = effectiveKeepLevel(carve);
-    level.raised_to_a_count = used > carve.keep_level;
-    level.level = carve.keep_level = used;
+    setKeepLevel(carve, level.level, darkPixelsAreExact(run.noise.detector),
+                 run.sonar.intensityScale().darkPower());
+    level.raised_to_a_count = carve.keep_level > level.level;
+    level.level = carve.keep_level;
     if (level.frames > 0) {
       run.choose(keepLevelChoice(level, carve.dynamic_range_db));
     }
