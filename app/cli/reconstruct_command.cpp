@@ -9,6 +9,7 @@
 
 #include "carve/map_file.h"
 #include "cli/commands.h"
+#include "cli/output_folder_run.h"
 #include "cli/param_flags.h"
 #include "cli/source_flags.h"
 #include "cli/terminal_progress.h"
@@ -43,30 +44,9 @@ ReconstructionParams paramsFrom(const ReconstructOptions& o) {
   return p;
 }
 
-int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
-                   const std::vector<std::string>& arguments) {
-  requireOutputFolder(o.out);  // before the mission is read
-  const Mission mission = openMission(o.mission, openOptionsFrom(o.source));
-  for (const std::string& warning : mission.warnings) {
-    std::cerr << "warning: " << warning << "\n";
-  }
-  const ReconstructionParams params = paramsFrom(o);
-  // The pipeline checks its parameters and reads a given noise model: a bad one fails before
-  // the output folder is made.
-  Pipeline pipeline(mission, params, pool);
-  if (o.surface_only && o.load_map.empty()) {
-    throw Error("--surface-only", "", "needs --load-map: the map whose surface to resolve");
-  }
-  if (!o.load_map.empty()) {
-    pipeline.startFrom(loadMap(o.load_map), !o.surface_only, o.load_map);
-  }
-  if (o.save_map) {
-    pipeline.keepWholeMap();  // map.scmap is the whole map
-  }
-  const std::filesystem::path out(o.out);
-  prepareOutputFolder(out);
-  const OutputFolderLock lock(out);
-
+// Runs the pipeline into its folder, made ready and held: the outputs, choices and warnings.
+int carveInto(const std::filesystem::path& out, Pipeline& pipeline, const ReconstructOptions& o,
+              const std::vector<std::string>& arguments) {
   TerminalProgress progress;
   const auto announce = [&progress, verbose = o.verbose](const ReconstructionResult& result) {
     progress.finish();
@@ -91,6 +71,33 @@ int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
   const ReconstructionResult result = pipeline.run(progress);
   std::cout << result.report;
   return result.cancelled ? 130 : 0;
+}
+
+int runReconstruct(const ReconstructOptions& o, ThreadPool& pool,
+                   const std::vector<std::string>& arguments) {
+  requireOutputFolder(o.out);  // before the mission is read
+  const Mission mission = openMission(o.mission, openOptionsFrom(o.source));
+  for (const std::string& warning : mission.warnings) {
+    std::cerr << "warning: " << warning << "\n";
+  }
+  const ReconstructionParams params = paramsFrom(o);
+  // The pipeline checks its parameters and reads a given noise model: a bad one fails before
+  // the output folder is made.
+  Pipeline pipeline(mission, params, pool);
+  if (o.surface_only && o.load_map.empty()) {
+    throw Error("--surface-only", "", "needs --load-map: the map whose surface to resolve");
+  }
+  if (!o.load_map.empty()) {
+    pipeline.startFrom(loadMap(o.load_map), !o.surface_only, o.load_map);
+  }
+  if (o.save_map) {
+    pipeline.keepWholeMap();  // map.scmap is the whole map
+  }
+  const std::filesystem::path out(o.out);
+  return runIntoOutputFolder(out, PartialOutput::Kept, [&] {
+    const OutputFolderLock lock(out);
+    return carveInto(out, pipeline, o, arguments);
+  });
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "cli/commands.h"
 #include "cli/nav_error_flags.h"
+#include "cli/output_folder_run.h"
 #include "cli/terminal_progress.h"
 #include "common/angles.h"
 #include "common/error.h"
@@ -155,35 +156,37 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
       o.max_frames >= 0 ? std::optional<int>(o.max_frames) : std::nullopt,
       out,
       declaredBeam(o.declared_beam)};
-  prepareOutputFolder(out);
-  // Two runs into one folder would mix their frames, navigation and ground truth.
-  const OutputFolderLock lock(out);
+  // A simulation cut short is no mission: a folder made for it goes with it.
+  return runIntoOutputFolder(out, PartialOutput::Removed, [&] {
+    // Two runs into one folder would mix their frames, navigation and ground truth.
+    const OutputFolderLock lock(out);
 
-  TerminalProgress progress;
-  const SimulationResult result = runSimulation(
-      request, progress, pool,
-      field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt, relief);
-  progress.finish();
-  std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
-            << result.frames_written << " frames of '" << (field ? o.scene : request.scene.name)
-            << "' (" << request.trajectory.kind << ") to " << out.string() << "; "
-            << result.visible_points << " visible surface points; at most "
-            << result.most_triangles_traced << " scene triangles traced at once, "
-            << result.ground_truth_triangles << " in the ground truth\n";
-  if (result.cancelled) {
-    return 130;
-  }
-  if (o.format != "folder") {
-    // The same mission as a ROS 2 bag beside the folder's files (ground truth and all).
-    BagWriteOptions bag;
-    bag.format = enumFromString<BagFormat>(o.format).value_or(BagFormat::Mcap);
-    const std::filesystem::path file =
-        out / (bag.format == BagFormat::Db3 ? "mission.db3" : "mission.mcap");
-    const BagWriteReport written = writeRosBag(readMission(out), file, bag);
-    std::cout << "wrote " << written.frames << " frames and " << written.poses
-              << " poses as a ROS 2 bag (" << o.format << ") to " << file.string() << "\n";
-  }
-  return 0;
+    TerminalProgress progress;
+    const SimulationResult result = runSimulation(
+        request, progress, pool,
+        field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt, relief);
+    progress.finish();
+    std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
+              << result.frames_written << " frames of '" << (field ? o.scene : request.scene.name)
+              << "' (" << request.trajectory.kind << ") to " << out.string() << "; "
+              << result.visible_points << " visible surface points; at most "
+              << result.most_triangles_traced << " scene triangles traced at once, "
+              << result.ground_truth_triangles << " in the ground truth\n";
+    if (result.cancelled) {
+      return 130;
+    }
+    if (o.format != "folder") {
+      // The same mission as a ROS 2 bag beside the folder's files (ground truth and all).
+      BagWriteOptions bag;
+      bag.format = enumFromString<BagFormat>(o.format).value_or(BagFormat::Mcap);
+      const std::filesystem::path file =
+          out / (bag.format == BagFormat::Db3 ? "mission.db3" : "mission.mcap");
+      const BagWriteReport written = writeRosBag(readMission(out), file, bag);
+      std::cout << "wrote " << written.frames << " frames and " << written.poses
+                << " poses as a ROS 2 bag (" << o.format << ") to " << file.string() << "\n";
+    }
+    return 0;
+  });
 }
 
 }  // namespace

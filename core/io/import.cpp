@@ -147,20 +147,11 @@ Mounting readMountingYaml(const std::filesystem::path& path) {
 
 namespace {
 
-// Writes a mission folder (new or empty) of `count` frames, each as power (loadFrame's); a
-// frame that cannot be read is reported in `report` and left out.
-void writeMissionFolder(const ImportRequest& request, const SonarModel& sonar,
-                        const Mounting& mounting, const NavTrack& nav, const std::string& crs,
-                        std::size_t count, const std::function<Frame(std::size_t)>& frame_at,
-                        Progress& progress, ImportReport& report) {
-  prepareOutputFolder(request.out);
-  // Held before it is found empty: a second import into it fails instead of mixing its frames.
-  const OutputFolderLock lock(request.out);
-  std::error_code ec;
-  if (!std::filesystem::is_empty(request.out, ec)) {
-    throw Error(request.out.string(), "",
-                "output folder exists and is not empty: choose a new folder");
-  }
+// The mission's files, into a folder made ready and held.
+void writeMissionFiles(const ImportRequest& request, const SonarModel& sonar,
+                       const Mounting& mounting, const NavTrack& nav, const std::string& crs,
+                       std::size_t count, const std::function<Frame(std::size_t)>& frame_at,
+                       Progress& progress, ImportReport& report) {
   const std::string name = request.name.empty() ? request.log.filename().string() : request.name;
   MissionWriter writer(request.out, name, sonar, mounting);
   for (std::size_t k = 0; k < count; ++k) {
@@ -183,6 +174,34 @@ void writeMissionFolder(const ImportRequest& request, const SonarModel& sonar,
   writer.finish(nav, crs);
   progress.report("writing frames", count, count);
   report.frames_written = writer.frameCount();
+}
+
+// Writes a mission folder (new or empty) of `count` frames, each as power (loadFrame's); a
+// frame that cannot be read is reported in `report` and left out.
+void writeMissionFolder(const ImportRequest& request, const SonarModel& sonar,
+                        const Mounting& mounting, const NavTrack& nav, const std::string& crs,
+                        std::size_t count, const std::function<Frame(std::size_t)>& frame_at,
+                        Progress& progress, ImportReport& report) {
+  const std::vector<std::filesystem::path> created = prepareOutputFolder(request.out);
+  // Held before it is found empty: a second import into it fails instead of mixing its frames.
+  const OutputFolderLock lock(request.out);
+  std::error_code ec;
+  if (!std::filesystem::is_empty(request.out, ec)) {
+    throw Error(request.out.string(), "",
+                "output folder exists and is not empty: choose a new folder");
+  }
+  try {
+    writeMissionFiles(request, sonar, mounting, nav, crs, count, frame_at, progress, report);
+  } catch (const Error& e) {
+    // A mission cut short is no mission: the folder is left as the import found it.
+    const bool removed = !removeCreatedFolders(created, true).empty();
+    for (const auto& entry : std::filesystem::directory_iterator(request.out, ec)) {
+      std::filesystem::remove_all(entry.path(), ec);  // the folder was empty before
+    }
+    throw Error(e.source(), e.place(),
+                e.message() + (removed ? "; removed " : "; emptied ") + request.out.string() +
+                    ", which held the import's partial mission");
+  }
 }
 
 }  // namespace

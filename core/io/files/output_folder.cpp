@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <unistd.h>
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -56,10 +57,20 @@ void requireOutputFolder(const std::filesystem::path& folder) {
   // Anything else (a missing permission, a file among the parents) is for the creation to say.
 }
 
-void prepareOutputFolder(const std::filesystem::path& folder) {
+std::vector<std::filesystem::path> prepareOutputFolder(const std::filesystem::path& folder) {
   requireOutputFolder(folder);
   const std::string name = folder.string();
+  std::vector<std::filesystem::path> created;
   std::error_code ec;
+  for (std::filesystem::path missing = folder;
+       !missing.empty() && !std::filesystem::exists(std::filesystem::symlink_status(missing, ec));
+       missing = missing.parent_path()) {
+    created.push_back(missing);
+    if (missing == missing.parent_path()) {
+      break;
+    }
+  }
+  std::reverse(created.begin(), created.end());  // outermost first
   std::filesystem::create_directories(folder, ec);
   if (ec || !std::filesystem::is_directory(folder)) {
     throw Error(name, "",
@@ -77,6 +88,26 @@ void prepareOutputFolder(const std::filesystem::path& folder) {
   }
   ::close(fd);
   ::unlink(probe.c_str());
+  return created;
+}
+
+std::vector<std::filesystem::path> removeCreatedFolders(
+    const std::vector<std::filesystem::path>& created, bool with_contents) {
+  std::vector<std::filesystem::path> removed;
+  for (auto folder = created.rbegin(); folder != created.rend(); ++folder) {
+    std::error_code ec;
+    const bool inner = folder == created.rbegin();
+    if (inner && with_contents) {
+      std::filesystem::remove_all(*folder, ec);
+    } else {
+      std::filesystem::remove(*folder, ec);  // only if empty
+    }
+    if (ec || std::filesystem::exists(std::filesystem::symlink_status(*folder, ec))) {
+      break;
+    }
+    removed.push_back(*folder);
+  }
+  return removed;
 }
 
 OutputFolderLock::OutputFolderLock(const std::filesystem::path& folder, FolderUse use) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 namespace sonarcarve {
 
@@ -16,8 +17,17 @@ void requireOutputFolder(const std::filesystem::path& folder);
 
 /// Checks `folder` as requireOutputFolder, creates it (and its parents) if needed and checks
 /// that files can be created in it. Throws Error naming the folder and the cause: something
-/// else in the way, a read-only folder or disk, a missing permission.
-void prepareOutputFolder(const std::filesystem::path& folder);
+/// else in the way, a read-only folder or disk, a missing permission. Returns the folders it
+/// created, outermost first (none when `folder` existed), for removeCreatedFolders.
+std::vector<std::filesystem::path> prepareOutputFolder(const std::filesystem::path& folder);
+
+/// What a run that failed does with the folders prepareOutputFolder created for it, so that no
+/// folder is left that looks like a result: removes them, innermost first, if they are empty,
+/// or, with `with_contents` (a command whose partial output is no result: simulate, import),
+/// with what is in them. Stops at the first that cannot or must not be removed. Returns those
+/// removed; never throws.
+std::vector<std::filesystem::path> removeCreatedFolders(
+    const std::vector<std::filesystem::path>& created, bool with_contents);
 
 enum class FolderUse {
   Exclusive,  ///< a run that writes the folder's files (simulate, import, reconstruct)

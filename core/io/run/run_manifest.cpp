@@ -110,10 +110,14 @@ RunManifest::RunManifest(std::filesystem::path folder, std::vector<std::string> 
   write("running", "");
 }
 
-void RunManifest::wrote(const std::string& name) {
+RunManifestFile describeRunFile(const std::filesystem::path& folder, const std::string& name) {
   std::error_code ec;
-  const std::uintmax_t bytes = std::filesystem::file_size(folder_ / name, ec);
-  files_.push_back({name, ec ? 0 : bytes, fileSha256(folder_ / name)});
+  const std::uintmax_t bytes = std::filesystem::file_size(folder / name, ec);
+  return {name, ec ? 0 : bytes, fileSha256(folder / name)};
+}
+
+void RunManifest::wrote(const std::string& name) {
+  files_.push_back(describeRunFile(folder_, name));
 }
 
 void RunManifest::finish(const std::string& status, const std::string& error) {

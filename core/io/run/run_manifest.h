@@ -36,6 +36,8 @@ class RunManifest {
 
   /// Records a file of this run, its size and SHA-256 read from the folder.
   void wrote(const std::string& name);
+  /// Records a file of this run described elsewhere (written apart, then moved in).
+  void wrote(const RunManifestFile& file) { files_.push_back(file); }
   /// The files of this run recorded so far, in the order written.
   const std::vector<RunManifestFile>& files() const { return files_; }
 
@@ -56,6 +58,9 @@ class RunManifest {
   std::vector<RunManifestFile> files_;
   std::vector<std::filesystem::path> removed_;
 };
+
+/// The file `name` in `folder`: its size and SHA-256 (empty if it cannot be read).
+RunManifestFile describeRunFile(const std::filesystem::path& folder, const std::string& name);
 
 /// Names of the files of the earlier run listed in the manifest at `path` ("files" and, for a
 /// run that did not finish, "earlier_files"); plain file names only. Empty if the manifest is

@@ -1,13 +1,15 @@
 // export: the run's outputs in its folder (docs/formats.md), each written atomically, and the
-// run manifest that lists them: "running" before the first file, then "complete",
-// "cancelled" or "failed". It runs after a cancellation too: a cancelled run keeps what it
-// finished, and says so.
+// run manifest that lists them. They are written apart first (io/run/staged_outputs.h): a run
+// that fails while writing leaves the folder as it was. Then the manifest says "running", the
+// files are moved in, and it says "complete" or "cancelled" ("failed" if a move fails). It
+// runs after a cancellation too: a cancelled run keeps what it finished, and says so.
 #include "carve/map_file.h"
 #include "carve/occupancy_export.h"
 #include "common/error.h"
 #include "io/files/atomic_file.h"
 #include "io/mission/nav_csv.h"
 #include "io/run/run_manifest.h"
+#include "io/run/staged_outputs.h"
 #include "mesh/mesh_export.h"
 #include "occlusion/surface_points.h"
 #include "pipeline/refined_track.h"
@@ -18,16 +20,28 @@
 namespace sonarcarve {
 namespace {
 
+// The files written into the staging folder, in order, with their sizes and checksums.
+class Written {
+ public:
+  explicit Written(std::filesystem::path folder) : folder_(std::move(folder)) {}
+  void wrote(const std::string& name) { files_.push_back(describeRunFile(folder_, name)); }
+  const std::vector<RunManifestFile>& files() const { return files_; }
+
+ private:
+  std::filesystem::path folder_;
+  std::vector<RunManifestFile> files_;
+};
+
 // report.json, then report.html, which lists the files written before it with checksums.
-void writeReports(const RunContext& run, const std::filesystem::path& out, RunManifest& manifest) {
+void writeReports(const RunContext& run, const std::filesystem::path& out, Written& manifest) {
   writeFileAtomically(out / "report.json", run.result.report);
   manifest.wrote("report.json");
   writeReportPage(run, out, manifest.files());
   manifest.wrote("report.html");
 }
 
-void writeOutputs(const RunContext& run, const OutputSettings& settings, RunManifest& manifest) {
-  const std::filesystem::path& out = settings.folder;
+void writeOutputs(const RunContext& run, const OutputSettings& settings,
+                  const std::filesystem::path& out, Written& manifest) {
   const ReconstructionResult& result = run.result;
   if (settings.report_only) {
     writeReports(run, out, manifest);
@@ -81,9 +95,23 @@ class ExportStage : public Stage {
   bool runsAfterCancel() const override { return true; }
 
   void run(RunContext& run, Progress&) const override {
+    const StagedOutputs staged(settings_.folder);
+    Written written(staged.staging());
+    try {
+      writeOutputs(run, settings_, staged.staging(), written);
+    } catch (const Error& e) {
+      throw Error(staged.outputName(e.source()), e.place(),
+                  e.message() + "; nothing was changed in " + settings_.folder.string() +
+                      " (the run's files are written apart first and moved in when all are "
+                      "complete)");
+    }
     RunManifest manifest(settings_.folder, settings_.arguments, runOutputFiles());
     try {
-      writeOutputs(run, settings_, manifest);
+      for (const RunManifestFile& file : written.files()) {
+        staged.publish(file.name);
+        manifest.wrote(file);
+      }
+      staged.sync();
     } catch (const Error& e) {
       try {
         manifest.finish("failed", e.what());

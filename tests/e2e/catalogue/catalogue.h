@@ -70,6 +70,7 @@ std::vector<CatalogueCase> geoCases();
 std::vector<CatalogueCase> boundCases();
 std::vector<CatalogueCase> senseCases();
 std::vector<CatalogueCase> messageCases();
+std::vector<CatalogueCase> failedRunCases();
 
 // Inputs for the cases.
 /// Runs `sonarcarve-cli ARGS` in the workspace to make an input, and expects it to succeed.

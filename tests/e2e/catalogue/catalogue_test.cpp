@@ -26,6 +26,7 @@ INSTANTIATE_TEST_SUITE_P(Geo, Catalogue, ::testing::ValuesIn(geoCases()), nameOf
 INSTANTIATE_TEST_SUITE_P(Bounds, Catalogue, ::testing::ValuesIn(boundCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Sense, Catalogue, ::testing::ValuesIn(senseCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Messages, Catalogue, ::testing::ValuesIn(messageCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(FailedRuns, Catalogue, ::testing::ValuesIn(failedRunCases()), nameOf);
 
 }  // namespace
 }  // namespace sonarcarve::test

@@ -13,7 +13,8 @@ CatalogueCase reconstructWith(const std::string& name, const std::string& flags,
   return {.name = name,
           .prepare =
               [flags](const Workspace&) { return "reconstruct mission " + flags + " --out out"; },
-          .message = message};
+          .message = message,
+          .absent = {"out"}};  // made by the run, removed when it failed (failed_run_cases.cpp)
 }
 
 // A run that starts from the example mission's saved map (carved at the default 2 cm).

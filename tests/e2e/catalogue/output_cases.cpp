@@ -280,8 +280,8 @@ std::vector<CatalogueCase> outputCases() {
        .message = {"fan.png: byte", "write failed: File too large"},
        .intact = {"fan.png"},
        .file_size_limit_kib = 2},
-      // The earlier run's report goes with it: a failed run leaves its own files only, and a
-      // manifest that says it failed.
+      // The run's files are written apart first: none can be, so the folder is as it was, the
+      // earlier run's report included (failed_run_cases.cpp has more).
       {.name = "ReconstructOnAFullDisk",
        .prepare =
            [](const Workspace& ws) {
@@ -291,11 +291,11 @@ std::vector<CatalogueCase> outputCases() {
        // The temporary file of map.bt's blocks cannot grow either: they are kept in memory
        // and the run goes on to the outputs, which fail.
        .message = {"out/", "write failed: File too large",
-                   "warning: temporary file of map.bt blocks", "was kept in memory instead"},
-       .absent = {"out/report.json"},
-       .file_size_limit_kib = 1,
-       .holds = {{"out/manifest.json", "\"status\": \"failed\""},
-                 {"out/manifest.json", "write failed: File too large"}}},
+                   "warning: temporary file of map.bt blocks", "was kept in memory instead",
+                   "nothing was changed in out"},
+       .absent = {"out/manifest.json", "out/surface_points.ply"},
+       .intact = {"out/report.json"},
+       .file_size_limit_kib = 1},
       {.name = "ReconstructWritesAManifest",
        .prepare = [](const Workspace&) { return std::string("reconstruct mission --out out"); },
        .outcome = Outcome::Succeeds,
@@ -321,7 +321,9 @@ std::vector<CatalogueCase> outputCases() {
            [](const Workspace&) {
              return std::string("simulate --scene riser --max-frames 1 --out sim");
            },
-       .message = {"sim/", "write failed: File too large"},
+       .message = {"sim/", "write failed: File too large",
+                   "removed sim, which this run had created"},
+       .absent = {"sim"},
        .file_size_limit_kib = kFullDiskKib},
   };
 }

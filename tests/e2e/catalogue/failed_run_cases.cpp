@@ -1,0 +1,112 @@
+// Class "a failed run leaves no result" (issue 44): a run that fails once it has started (an
+// input found wrong by a stage, the memory budget, a full disk) must not leave an empty or
+// half-written --out that looks like a result. A folder the run made is removed again, and
+// said so; an earlier result in the folder survives the failed run intact, its manifest still
+// "complete". The message cases (message_cases.cpp) check the same for every error they raise.
+#include "e2e/catalogue/catalogue.h"
+
+namespace sonarcarve::test {
+namespace {
+
+// An earlier run's result in out/: its files and a manifest that lists them.
+void writeEarlierResult(const Workspace& ws) {
+  for (const char* name : {"surface_points.ply", "mesh.ply", "report.json"}) {
+    writePrevious(ws / "out" / name);
+  }
+  writeBytes(ws / "out/manifest.json",
+             R"({"status": "complete", "files": [{"name": "surface_points.ply"},)"
+             R"( {"name": "mesh.ply"}, {"name": "report.json"}]})");
+}
+
+const std::vector<std::string> kEarlierResult = {"out/surface_points.ply", "out/mesh.ply",
+                                                 "out/report.json"};
+const std::pair<std::string, std::string> kEarlierManifest = {"out/manifest.json", "\"complete\""};
+
+CatalogueCase keepsEarlierResult(const std::string& name, const std::string& flags,
+                                 const std::vector<std::string>& message, int file_limit_kib = 0) {
+  return {.name = name,
+          .prepare =
+              [flags](const Workspace& ws) {
+                writeEarlierResult(ws);
+                return "reconstruct mission " + flags + " --out out";
+              },
+          .message = message,
+          .absent = {"out/map.bt", "out/params.yaml"},
+          .intact = kEarlierResult,
+          .file_size_limit_kib = file_limit_kib,
+          .holds = {kEarlierManifest}};
+}
+
+CatalogueCase removesNewFolder(const std::string& name, const std::string& command,
+                               const std::vector<std::string>& message, int file_limit_kib = 0) {
+  std::vector<std::string> said = message;
+  said.push_back("removed new/deeper/out, which this run had created");
+  said.push_back("removed new, which this run had created");
+  return {.name = name,
+          .prepare = [command](const Workspace&) { return command + " --out new/deeper/out"; },
+          .message = said,
+          .absent = {"new"},
+          .file_size_limit_kib = file_limit_kib};
+}
+
+std::string importCommand(const Workspace& ws) {
+  std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
+  return "import --format oculus ping.raw";
+}
+
+}  // namespace
+
+std::vector<CatalogueCase> failedRunCases() {
+  return {
+      removesNewFolder("ReconstructWithNoFrameSelected", "reconstruct mission --first-frame 20",
+                       {"frames.first (--first-frame)"}),
+      removesNewFolder("ReconstructOverItsMemoryBudget", "reconstruct mission --memory-budget 1",
+                       {"but the memory budget is 1.0 MiB (memory_budget_mb)"}),
+      removesNewFolder("ReconstructOnAFullDisk", "reconstruct mission",
+                       {"write failed: File too large"}, 1),
+      removesNewFolder("SimulateOnAFullDisk", "simulate --scene riser --max-frames 1",
+                       {"write failed: File too large"}, 8),
+      keepsEarlierResult("ReconstructWithNoFrameSelectedKeepsAnEarlierResult", "--first-frame 20",
+                         {"frames.first (--first-frame)"}),
+      keepsEarlierResult("ReconstructOffTheClockKeepsAnEarlierResult", "--time-offset 1000",
+                         {"expected frame times on the navigation's clock (--time-offset)"}),
+      keepsEarlierResult("ReconstructOverItsMemoryBudgetKeepsAnEarlierResult", "--memory-budget 1",
+                         {"(memory_budget_mb)"}),
+      // The outputs fail to be written: nothing of the run was moved into out/.
+      keepsEarlierResult("ReconstructOnAFullDiskKeepsAnEarlierResult", "",
+                         {"out/", "write failed: File too large",
+                          "nothing was changed in out (the run's files are written apart first"},
+                         1),
+      keepsEarlierResult("ReconstructSavingItsMapOnAFullDiskKeepsAnEarlierResult", "--save-map",
+                         {"write failed: File too large", "nothing was changed in out"}, 64),
+      {.name = "ReconstructRemovesTheStagingOfAKilledRun",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "out/.run.tmp-999999999/surface_points.ply");
+             return std::string("reconstruct mission --out out");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"\"frames_used\""},
+       .absent = {"out/.run.tmp-999999999"},
+       .holds = {{"out/manifest.json", "\"complete\""}}},
+      {.name = "ImportOnAFullDisk",
+       .prepare = [](const Workspace& ws) { return importCommand(ws) + " --out imported"; },
+       .message = {"write failed: File too large",
+                   "removed imported, which held the import's partial mission"},
+       .absent = {"imported"},
+       .file_size_limit_kib = 1},
+      {.name = "ImportIntoAnEmptyFolderOnAFullDisk",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "imported");
+             return importCommand(ws) + " --out imported";
+           },
+       .message = {"write failed: File too large",
+                   "emptied imported, which held the import's partial mission"},
+       .absent = {"imported/frames", "imported/mission.yaml", "imported/frames.csv",
+                  "imported/nav.csv"},
+       .file_size_limit_kib = 1},
+  };
+}
+
+}  // namespace sonarcarve::test
