@@ -32,6 +32,8 @@ inline constexpr PhysicalRange kVerticalAperture{0.1, 180.0, "degrees", true};
 inline constexpr PhysicalRange kHorizontalBeamWidth{0.01, 360.0, "degrees", true};
 /// Mounting angles: a turn either way.
 inline constexpr PhysicalRange kMountingAngle{-360.0, 360.0, "degrees"};
+/// Speed of sound in water: 1400 to 1560 m/s in the sea, wider for fresh water and error.
+inline constexpr PhysicalRange kSoundSpeed{1000.0, 2000.0, "m/s"};
 /// Intensity scales: the decibels of full scale, the count of full scale, a gamma exponent.
 inline constexpr PhysicalRange kFullScaleDb{1.0, 200.0, "dB"};
 inline constexpr PhysicalRange kFullScaleCount{1.0, 4294967295.0, "counts"};
@@ -40,5 +42,27 @@ inline constexpr PhysicalRange kGammaExponent{0.01, 10.0, ""};
 /// "expected 0.0001 to 10 m, got 1e-300" when `value` is outside `range` (or not finite);
 /// nothing when it is within.
 std::optional<std::string> outsideRange(double value, const PhysicalRange& range);
+
+/// One quantity a recording (a vendor log, a bag) declares about its sonar, with the name of
+/// the field it was read from, so that an error names the recording's own field.
+struct RecordedQuantity {
+  std::string field;  ///< "rangeResolution", "ranges", "tx_beamwidths"; empty: not recorded
+  double value = 0.0;
+};
+
+/// A recording's sonar geometry: what the readers of Oculus logs, ARIS recordings and ROS 2
+/// bags read from each frame's header or message.
+struct RecordedGeometry {
+  RecordedQuantity near_range_m;
+  RecordedQuantity range_resolution_m;
+  int bins = 0;
+  RecordedQuantity field_of_view_deg;  ///< the span of the bearing table
+  RecordedQuantity vertical_aperture_deg;
+};
+
+/// The first quantity of `g` outside the ranges above, as "rangeResolution: expected 1e-04 to
+/// 10 m, got 1e-300" (the farthest range, nearest + bins x resolution, at most kMaxFarRange_m);
+/// nothing when every one is within. The readers throw it with the file and the frame.
+std::optional<std::string> recordedGeometryProblem(const RecordedGeometry& g);
 
 }  // namespace sonarcarve

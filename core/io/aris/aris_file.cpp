@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "io/files/input_file.h"
+#include "sonar/sonar_ranges.h"
 
 namespace sonarcarve {
 namespace {
@@ -68,8 +69,19 @@ std::string geometryProblem(const ArisFrameInfo& info) {
   if (info.sample_period_us == 0) {
     return "SamplePeriod 0 (expected a positive number of microseconds)";
   }
-  if (!(info.sound_speed_mps > 1000.0F && info.sound_speed_mps < 2000.0F)) {
-    return "SoundSpeed " + std::to_string(info.sound_speed_mps) + " (expected 1000 to 2000 m/s)";
+  if (const auto problem = outsideRange(info.sound_speed_mps, kSoundSpeed)) {
+    return "SoundSpeed: " + *problem;
+  }
+  // The range window against the ranges a mission.yaml is held to (sonar/sonar_ranges.h); the
+  // bearings and the aperture are the lens's, not the file's.
+  const RecordedGeometry geometry{
+      .near_range_m = {"SampleStartDelay (the window's start)", info.windowStart()},
+      .range_resolution_m = {"SamplePeriod (a sample's length)", info.sampleLength()},
+      .bins = static_cast<int>(info.samples_per_beam),
+      .field_of_view_deg = {},
+      .vertical_aperture_deg = {}};
+  if (const auto problem = recordedGeometryProblem(geometry)) {
+    return *problem;
   }
   if (!info.reordered) {
     return "ReorderedSamples 0 (samples in the sonar's raw order; expected a recording)";

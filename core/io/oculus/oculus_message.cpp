@@ -8,6 +8,7 @@
 #include "common/angles.h"
 #include "common/error.h"
 #include "io/files/yaml_fields.h"
+#include "sonar/sonar_ranges.h"
 
 namespace sonarcarve {
 namespace {
@@ -153,11 +154,8 @@ OculusPing decodeOculusPing(std::span<const std::uint8_t> bytes, std::size_t off
                                          ": only 8-bit (0) and 16-bit (1) samples are supported");
   }
   p.sample_bytes = data_size == 0 ? 1 : 2;
-  if (!(p.range_resolution_m > 0.0) || !std::isfinite(p.range_resolution_m) ||
-      p.range_resolution_m > 10.0) {
-    in.fail(field(layout.range_resolution), "rangeResolution " +
-                                                shortestNumber(p.range_resolution_m) +
-                                                " m: expected a positive number of at most 10 m");
+  if (const auto problem = outsideRange(p.speed_of_sound_mps, kSoundSpeed)) {
+    in.fail(field(layout.speed_of_sound), "speedOfSoundUsed: " + *problem);
   }
   if (p.n_ranges == 0) {
     in.fail(field(layout.n_ranges), "nRanges is 0: expected at least one range line");
@@ -192,6 +190,18 @@ OculusPing decodeOculusPing(std::span<const std::uint8_t> bytes, std::size_t off
     }
     previous = centi_deg;
     p.bearings_rad[static_cast<std::size_t>(j)] = degToRad(centi_deg * 0.01);
+  }
+  // The sonar's geometry against the ranges a mission.yaml is held to (sonar/sonar_ranges.h).
+  const RecordedGeometry geometry{
+      .near_range_m = {"", 0.0},  // the first range line starts at the transducer
+      .range_resolution_m = {"rangeResolution", p.range_resolution_m},
+      .bins = p.n_ranges,
+      .field_of_view_deg = {"bearing table (its span)",
+                            radToDeg(p.bearings_rad.back() - p.bearings_rad.front())},
+      .vertical_aperture_deg = {}};  // not in the message: given or assumed by the reader
+  if (const auto problem = recordedGeometryProblem(geometry)) {
+    const bool range = problem->rfind("rangeResolution", 0) == 0;
+    in.fail(field(range ? layout.range_resolution : table_start), *problem);
   }
 
   // Image: rows of nBeams samples, each row with a 4-byte gain before it or not. The sizes

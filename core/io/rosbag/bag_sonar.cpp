@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "common/input_limits.h"
 #include "io/rosbag/ros_frames.h"
+#include "sonar/sonar_ranges.h"
 
 namespace sonarcarve {
 namespace {
@@ -169,6 +170,18 @@ BagSonarGeometry bagSonarGeometry(const ProjectedSonarImageMsg& msg, SonarAxes a
   std::vector<std::string> notes;
   const RangeBins range = rangeBinsOf(msg.ranges_m, source, place, notes);
   const double aperture = apertureOf(msg, aperture_deg, notes);
+  // Against the ranges a mission.yaml is held to (sonar/sonar_ranges.h).
+  const RecordedGeometry recorded{
+      .near_range_m = {"ranges (the first)", range.min_m},
+      .range_resolution_m = {"ranges (their spacing)", range.resolution_m},
+      .bins = range.count,
+      .field_of_view_deg = {"beam_directions (their span of bearings)",
+                            radToDeg(centres.back() - centres.front())},
+      .vertical_aperture_deg = {aperture_deg ? "--aperture-deg" : "ping_info.tx_beamwidths",
+                                radToDeg(aperture)}};
+  if (const auto problem = recordedGeometryProblem(recorded)) {
+    throw Error(source, place, *problem);
+  }
   BagSonarGeometry g{SonarModel(sonar_id, range, BearingTable::fromCentres(centres), aperture),
                      resolved,
                      layout,
@@ -213,6 +226,13 @@ void checkBagSonarMessage(const ProjectedSonarImageMsg& msg, const BagSonarGeome
       throw Error(source, place,
                   "beam_directions[" + std::to_string(b) +
                       "] differs from the first sonar message's: one geometry per bag is read");
+    }
+  }
+  // Not used for the geometry (ranges are in metres), but a value out of any sea is a corrupt
+  // message; 0 is a driver that does not fill it in.
+  if (msg.sound_speed_mps != 0.0F) {
+    if (const auto problem = outsideRange(msg.sound_speed_mps, kSoundSpeed)) {
+      throw Error(source, place, "sound_speed: " + *problem + " (or 0 when not known)");
     }
   }
   const std::size_t size = sonarDtypeSize(msg.dtype);

@@ -71,6 +71,7 @@ std::vector<CatalogueCase> boundCases();
 std::vector<CatalogueCase> senseCases();
 std::vector<CatalogueCase> messageCases();
 std::vector<CatalogueCase> failedRunCases();
+std::vector<CatalogueCase> recordedSonarCases();
 
 // Inputs for the cases.
 /// Runs `sonarcarve-cli ARGS` in the workspace to make an input, and expects it to succeed.

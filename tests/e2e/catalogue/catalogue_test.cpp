@@ -27,6 +27,8 @@ INSTANTIATE_TEST_SUITE_P(Bounds, Catalogue, ::testing::ValuesIn(boundCases()), n
 INSTANTIATE_TEST_SUITE_P(Sense, Catalogue, ::testing::ValuesIn(senseCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(Messages, Catalogue, ::testing::ValuesIn(messageCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(FailedRuns, Catalogue, ::testing::ValuesIn(failedRunCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(RecordedSonar, Catalogue, ::testing::ValuesIn(recordedSonarCases()),
+                         nameOf);
 
 }  // namespace
 }  // namespace sonarcarve::test
