@@ -5,6 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+
 #include "common/error.h"
 #include "io/files/input_file.h"
 
@@ -36,7 +39,7 @@ std::shared_ptr<const MappedFile> MappedFile::map(const std::filesystem::path& p
     mapped->map_size_ = size;
     mapped->bytes_ = {static_cast<const std::uint8_t*>(map), size};
   }
-  ::close(fd);
+  mapped->fd_ = fd;
   return mapped;
 }
 
@@ -51,6 +54,20 @@ MappedFile::~MappedFile() {
   if (map_ != nullptr) {
     ::munmap(map_, map_size_);
   }
+  if (fd_ >= 0) {
+    ::close(fd_);
+  }
+}
+
+std::size_t MappedFile::dataAtOrAfter(std::size_t offset) const {
+  if (fd_ < 0 || offset >= bytes_.size()) {
+    return offset;
+  }
+  const off_t data = ::lseek(fd_, static_cast<off_t>(offset), SEEK_DATA);
+  if (data >= 0) {
+    return std::min(static_cast<std::size_t>(data), bytes_.size());
+  }
+  return errno == ENXIO ? bytes_.size() : offset;  // ENXIO: only a hole up to the end
 }
 
 }  // namespace sonarcarve

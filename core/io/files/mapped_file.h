@@ -28,11 +28,18 @@ class MappedFile {
 
   std::span<const std::uint8_t> bytes() const { return bytes_; }
 
+  /// The first offset at or after `offset` that is not in a hole of a sparse file (a hole
+  /// reads as zeros and holds no data: a scan for the next record may jump over it), or the
+  /// size when only holes are left. `offset` itself for bytes in memory, or when the file
+  /// system cannot say (lseek SEEK_DATA).
+  std::size_t dataAtOrAfter(std::size_t offset) const;
+
  private:
   MappedFile() = default;
   std::vector<std::uint8_t> owned_;
   void* map_ = nullptr;
   std::size_t map_size_ = 0;
+  int fd_ = -1;  ///< kept open for dataAtOrAfter
   std::span<const std::uint8_t> bytes_;
 };
 

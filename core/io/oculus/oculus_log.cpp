@@ -208,7 +208,7 @@ void OculusLog::indexMessages(std::span<const std::uint8_t> all, std::size_t beg
     if (!oculusSizeLeadsToAMessage(bytes, offset)) {
       // A corrupt header, garbage, or a message followed by garbage: the size is trusted only
       // if no confirmed message starts inside the span it claims.
-      const std::size_t next = findNextOculusMessage(bytes, offset + 1);
+      const std::size_t next = findNextOculusMessage(bytes, offset + 1, storage_.get());
       if (!keepsItsSize(bytes, offset, next)) {
         offset = skipCorruptBytes(bytes, offset, next, source);
         continue;

@@ -1,5 +1,6 @@
 #include "io/oculus/oculus_resync.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -49,8 +50,26 @@ bool oculusSizeLeadsToAMessage(std::span<const std::uint8_t> bytes, std::size_t 
   return next == bytes.size() || oculusHeaderFitsAt(bytes, next);
 }
 
-std::size_t findNextOculusMessage(std::span<const std::uint8_t> bytes, std::size_t from) {
+std::size_t findNextOculusMessage(std::span<const std::uint8_t> bytes, std::size_t from,
+                                  const MappedFile* file) {
+  constexpr std::size_t kWindow = std::size_t{1} << 20;  // a hole is looked for once a MiB
+  constexpr auto kIdFirstByte = static_cast<std::uint8_t>(kOculusId & 0xff);  // little-endian
+  std::size_t window_end = from;
   for (std::size_t at = from; at + kOculusHeaderSize <= bytes.size(); ++at) {
+    if (at >= window_end) {
+      at = file ? file->dataAtOrAfter(at) : at;
+      window_end = at + kWindow;
+      if (at + kOculusHeaderSize > bytes.size()) {
+        break;
+      }
+    }
+    const std::size_t stop = std::min(window_end, bytes.size() - kOculusHeaderSize + 1);
+    const void* found = std::memchr(bytes.data() + at, kIdFirstByte, stop - at);
+    if (found == nullptr) {
+      at = stop - 1;
+      continue;
+    }
+    at = static_cast<std::size_t>(static_cast<const std::uint8_t*>(found) - bytes.data());
     if (!oculusHeaderFitsAt(bytes, at) || readAt<std::uint16_t>(bytes, at + kMsgVersionField) > 2) {
       continue;
     }

@@ -10,6 +10,8 @@
 #include <limits>
 #include <span>
 
+#include "io/files/mapped_file.h"
+
 namespace sonarcarve {
 
 inline constexpr std::size_t kNoOculusMessage = std::numeric_limits<std::size_t>::max();
@@ -27,7 +29,10 @@ bool oculusSizeLeadsToAMessage(std::span<const std::uint8_t> bytes, std::size_t 
 
 /// The first offset at or after `from` where a confirmed message starts: its header fits, its
 /// msgVersion is 0 to 2, and either its size leads to a message or the end (as above) or it is
-/// a simple ping result that decodes. kNoOculusMessage if there is none.
-std::size_t findNextOculusMessage(std::span<const std::uint8_t> bytes, std::size_t from);
+/// a simple ping result that decodes. kNoOculusMessage if there is none. With `file` (whose
+/// bytes `bytes` begins), the holes of a sparse file are jumped over: a 20 GB hole after a
+/// ping is passed at once instead of read as 20 GB of zeros.
+std::size_t findNextOculusMessage(std::span<const std::uint8_t> bytes, std::size_t from,
+                                  const MappedFile* file = nullptr);
 
 }  // namespace sonarcarve

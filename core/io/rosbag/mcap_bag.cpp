@@ -227,7 +227,11 @@ void McapBag::readRecords(Bytes records, std::int64_t chunk, std::size_t base) {
             " of 9 bytes): expected an opcode and a length";
     } else {
       std::memcpy(&length, records.data() + pos + 1, sizeof length);
-      if (length > left - mcap::kRecordHeaderSize) {
+      if (records[pos] == 0x00) {
+        // The MCAP specification reserves opcode 0x00: zeros here are a hole of a sparse file
+        // or corruption, which read on as 9-byte records of nothing would take minutes.
+        cut = "opcode 0x00 is no MCAP record (zeros: a hole or corrupt data)";
+      } else if (length > left - mcap::kRecordHeaderSize) {
         cut = "record " + opcodeName(records[pos]) + " claims " + std::to_string(length) +
               " bytes, only " + std::to_string(left - mcap::kRecordHeaderSize) +
               " left: cut short or corrupt";
