@@ -12,6 +12,7 @@
 #include "common/angles.h"
 #include "common/error.h"
 #include "geo/crs.h"
+#include "io/files/json_text.h"
 #include "io/frame_source.h"
 #include "io/import.h"
 #include "io/mission/mission.h"
@@ -145,7 +146,7 @@ void infoOnLog(const std::string& path, bool json, double aperture_deg) {
                   {"resyncs", log.skipped().resyncs}}},
                 {"notes", log.notes()},
                 {"warnings", warnings}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j) << "\n";
     return;
   }
   std::printf("Log          %s (%s, %zu pings)\n", path.c_str(), log.container().c_str(),
@@ -185,7 +186,7 @@ bool infoOnBagWithoutSonar(const std::string& path, bool json) {
                               {"frames", {{"count", 0}}},
                               {"contents", contents},
                               {"warnings", notes}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j) << "\n";
     return true;
   }
   std::printf("Bag          %s (ROS 2 bag, %s)\n", path.c_str(), bag->storage().c_str());
@@ -254,7 +255,7 @@ void addInfoCommand(CLI::App& app, int& exit_code) {
         j["crs"] = mission.crs;
         j["origin_ned_m"] = vectorJson(mission.origin_ned_m);
       }
-      std::cout << j.dump(2) << "\n";
+      std::cout << jsonText(j) << "\n";
     } else {
       std::printf("Mission      %s (%s, %s)\n", summary.name.c_str(),
                   mission.folder.string().c_str(), mission.source->kind().c_str());

@@ -6,6 +6,7 @@
 #include "common/angles.h"
 #include "eval/evaluator.h"
 #include "geometry/scene_io.h"
+#include "io/files/json_text.h"
 #include "io/frame_source.h"
 #include "pipeline/keep_level.h"
 #include "pipeline/param_schema.h"
@@ -129,7 +130,7 @@ std::string reconstructionReport(const Mission& mission, const SonarModel& sonar
           nlohmann::json::parse(evaluate(result.mesh.vertices, truth_mesh, visible, pool).toJson());
     }
   }
-  return report.dump(2) + "\n";
+  return jsonText(report) + "\n";
 }
 
 }  // namespace sonarcarve

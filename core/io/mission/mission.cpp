@@ -1,5 +1,8 @@
 #include "io/mission/mission.h"
 
+#include <algorithm>
+#include <optional>
+
 #include "common/error.h"
 #include "io/files/csv_table.h"
 #include "io/files/frame_png.h"
@@ -27,6 +30,26 @@ bool staysInsideFolder(const std::string& file) {
   return true;
 }
 
+// Where `file` leads once its symbolic links are resolved (a `frames` folder that is a link to
+// "/"), when that is outside `root` (the mission folder, resolved) and could hold a frame's
+// bytes; nothing when it is inside, cannot be resolved, or is no regular file (a link to
+// /dev/zero): the frame reader refuses that by its kind and skips the frame, reading nothing.
+std::optional<std::filesystem::path> resolvedOutside(const std::filesystem::path& root,
+                                                     const std::string& file) {
+  std::error_code ec;
+  const std::filesystem::path real = std::filesystem::weakly_canonical(root / file, ec);
+  if (ec) {
+    return std::nullopt;
+  }
+  const auto [in_root, in_real] = std::mismatch(root.begin(), root.end(), real.begin(), real.end());
+  const bool other_kind =
+      std::filesystem::exists(real, ec) && !std::filesystem::is_regular_file(real, ec);
+  if (in_root == root.end() || other_kind) {
+    return std::nullopt;
+  }
+  return real;
+}
+
 // frames.files_outside_folder: "refused" (the default) or "allowed".
 bool allowsFilesOutside(const YAML::Node& frames_node, const YamlFields& fields) {
   const YAML::Node node = frames_node["files_outside_folder"];
@@ -40,8 +63,11 @@ bool allowsFilesOutside(const YAML::Node& frames_node, const YamlFields& fields)
   return value == "allowed";
 }
 
-std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& path, bool allow_outside) {
+std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& folder,
+                                        const std::filesystem::path& path, bool allow_outside) {
   const CsvTable table = CsvTable::read(path);
+  std::error_code ec;
+  const std::filesystem::path root = std::filesystem::weakly_canonical(folder, ec);
   const std::size_t t = table.column("time_s");
   const std::size_t id = table.column("sonar_id");
   const std::size_t file = table.column("file");
@@ -57,6 +83,13 @@ std::vector<FrameRecord> readFrameIndex(const std::filesystem::path& path, bool 
                   "column 'file': '" + record.file +
                       "' leaves the mission folder: expected a path inside it (or "
                       "frames.files_outside_folder: allowed in mission.yaml)");
+    }
+    const auto outside = allow_outside || ec ? std::nullopt : resolvedOutside(root, record.file);
+    if (outside) {
+      throw Error(table.file(), linePlace(row.line),
+                  "column 'file': '" + record.file + "' leads to '" + outside->string() +
+                      "', outside the mission folder, through a symbolic link: expected a path "
+                      "inside it (or frames.files_outside_folder: allowed in mission.yaml)");
     }
     if (!frames.empty() && record.time_s < frames.back().time_s) {
       throw Error(table.file(), linePlace(row.line),
@@ -160,7 +193,7 @@ Mission readMission(const std::filesystem::path& folder_or_yaml) {
     nav = translatedTrack(nav, -*origin);
   }
   std::vector<FrameRecord> frames =
-      readFrameIndex(folder / index_file, allowsFilesOutside(frames_node, fields));
+      readFrameIndex(folder, folder / index_file, allowsFilesOutside(frames_node, fields));
   Mission mission{folder,
                   std::move(name),
                   std::move(sonar),

@@ -11,6 +11,7 @@
 #include "common/sha256.h"
 #include "io/files/atomic_file.h"
 #include "io/files/input_file.h"
+#include "io/files/json_text.h"
 
 namespace sonarcarve {
 namespace {
@@ -156,7 +157,7 @@ void RunManifest::write(const std::string& status, const std::string& error) con
   if (!earlier_files_.empty()) {
     manifest["earlier_files"] = earlier_files_;
   }
-  writeFileAtomically(folder_ / kFileName, manifest.dump(2) + "\n");
+  writeFileAtomically(folder_ / kFileName, jsonText(manifest) + "\n");
 }
 
 }  // namespace sonarcarve

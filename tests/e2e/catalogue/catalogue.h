@@ -72,6 +72,7 @@ std::vector<CatalogueCase> senseCases();
 std::vector<CatalogueCase> messageCases();
 std::vector<CatalogueCase> failedRunCases();
 std::vector<CatalogueCase> recordedSonarCases();
+std::vector<CatalogueCase> pathCases();
 std::vector<CatalogueCase> mappedBoundCases();
 
 // Inputs for the cases.

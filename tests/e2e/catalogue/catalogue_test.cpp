@@ -29,6 +29,7 @@ INSTANTIATE_TEST_SUITE_P(Messages, Catalogue, ::testing::ValuesIn(messageCases()
 INSTANTIATE_TEST_SUITE_P(FailedRuns, Catalogue, ::testing::ValuesIn(failedRunCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(RecordedSonar, Catalogue, ::testing::ValuesIn(recordedSonarCases()),
                          nameOf);
+INSTANTIATE_TEST_SUITE_P(Paths, Catalogue, ::testing::ValuesIn(pathCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(MappedBounds, Catalogue, ::testing::ValuesIn(mappedBoundCases()), nameOf);
 
 }  // namespace
