@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "common/error.h"
@@ -313,6 +314,31 @@ std::uint8_t* VoxelMap::counts(std::size_t block) {
 
 Eigen::Vector3i VoxelMap::voxelOf(const Eigen::Vector3d& p_world) const {
   return (p_world / voxel_size_m_).array().floor().cast<int>();
+}
+
+void VoxelMap::setVoxels(const std::vector<std::pair<Eigen::Vector3i, float>>& voxels) {
+  std::map<std::size_t, std::vector<std::pair<int, float>>> by_block;
+  for (const auto& [voxel, v] : voxels) {
+    Eigen::Vector3i rel;
+    int in = 0;
+    for (int a = 2; a >= 0; --a) {
+      const int b = floorDiv(voxel[a], kBlockSide);
+      rel[a] = b - first_block_[a];
+      in = in * kBlockSide + (voxel[a] - b * kBlockSide);
+      if (rel[a] < 0 || rel[a] >= dims_[a]) {
+        throw Error("voxel map", "", "a voxel to set lies outside the map's box");
+      }
+    }
+    by_block[blockIndex(rel)].emplace_back(in, v);
+  }
+  std::array<float, kBlockVoxels> values{};
+  for (const auto& [block, changes] : by_block) {
+    copyValues(block, values.data());
+    for (const auto& [in, v] : changes) {
+      values[static_cast<std::size_t>(in)] = v;
+    }
+    storeBlock(block, values.data(), stamp(block));
+  }
 }
 
 float VoxelMap::value(const Eigen::Vector3i& voxel) const {

@@ -169,6 +169,10 @@ class VoxelMap {
   void storeBlock(std::size_t block, const float* values, std::uint32_t stamp,
                   const std::uint8_t* counts = nullptr, bool compact = true);
 
+  /// Sets global voxels (inside the box) to values, block by block (storeBlock; counts kept).
+  /// Not thread safe.
+  void setVoxels(const std::vector<std::pair<Eigen::Vector3i, float>>& voxels);
+
   /// Calls f(global voxel index, value) for every occupied voxel (0 < value < inf).
   void forEachOccupied(const std::function<void(const Eigen::Vector3i&, float)>& f) const;
   /// Like forEachOccupied, but only voxels with at least one of their six face neighbours

@@ -232,6 +232,16 @@ std::vector<ParamSpec> makeSchema() {
        .gui = {.group = "Carving", .label = "Shadow-aware carving", .advanced = true},
        .access = field([](auto& p) -> auto& { return p.shadow_aware_carving; }),
        .applies = usesFastEngine},
+      {.key = "heading_sectors",
+       .help = "fast engine: where the views come from several headings around a structure "
+               "(a track within 1.5 times the sonar's range), each 60-degree sector of headings "
+               "is also carved alone, and the surface it keeps where it swept its elevation "
+               "beam over it, which views from other headings carved at grazing incidence, is "
+               "set back; false: one carve of every view",
+       .flag = "--heading-sectors",
+       .gui = {.group = "Carving", .label = "Heading sectors", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.heading_sectors; }),
+       .applies = usesFastEngine},
       {.key = "seabed_aware_carving",
        .help = "fast engine, beam-aware: each frame fits the seabed it images and carves the "
                "water over it by what the seabed leaves of each pixel; false: the water "

@@ -71,6 +71,10 @@ struct ReconstructionParams {
   bool occlusion_aware_carving = false;
   /// Fast engine: whether frames carve shadow-aware (sets carve.shadow_aware for the run).
   ShadowCarving shadow_aware_carving = ShadowCarving::Auto;
+  /// Fast engine: a mission that views a structure from several headings has each heading
+  /// carved alone too, and what each keeps that the others carved at grazing incidence set
+  /// back (pipeline/sector_restore.h).
+  bool heading_sectors = true;
   /// Fast engine: each frame aligned to the map carved so far before it carves (issue 15).
   PoseRefinementParams pose_refinement;
   /// Fast engine, experimental: the carved map fitted to the frames (fit/map_fit.h).

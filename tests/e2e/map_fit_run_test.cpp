@@ -3,7 +3,6 @@
 // did, and keeps a surface as close to the truth as the voxels allow.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
@@ -16,11 +15,6 @@ using test::quoted;
 using test::runCli;
 
 constexpr double kVoxel_m = 0.02;  // the default voxel size
-
-nlohmann::json readJson(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
 
 TEST(MapFitRun, ExplainsMoreOfTheFramesAndKeepsTheSurfaceWithinTheVoxels) {
   test::ScratchDir dir;
@@ -35,7 +29,7 @@ TEST(MapFitRun, ExplainsMoreOfTheFramesAndKeepsTheSurfaceWithinTheVoxels) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("map fit: on"), std::string::npos) << run.output;
 
-  const nlohmann::json report = readJson(out / "report.json");
+  const nlohmann::json report = test::readJsonFile(out / "report.json");
   bool found = false;
   for (const auto& choice : report.at("choices")) {
     if (choice.at("name") == "map fit") {

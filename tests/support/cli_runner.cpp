@@ -1,5 +1,7 @@
 #include "support/cli_runner.h"
 
+#include <fstream>
+
 #include <sys/wait.h>
 #include <array>
 #include <cstdio>
@@ -27,6 +29,11 @@ RunResult runShell(const std::string& command) {
 
 std::string quoted(const std::filesystem::path& path) {
   return "'" + path.string() + "'";
+}
+
+nlohmann::json readJsonFile(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
 }
 
 }  // namespace sonarcarve::test

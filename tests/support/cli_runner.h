@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace sonarcarve::test {
@@ -15,6 +16,8 @@ struct RunResult {
 RunResult runCli(const std::string& args);
 /// Runs a shell command line, capturing what it prints; `command` redirects stderr if needed.
 RunResult runShell(const std::string& command);
+/// A JSON file a run wrote (report.json, manifest.json), parsed.
+nlohmann::json readJsonFile(const std::filesystem::path& path);
 /// A path quoted for the shell.
 std::string quoted(const std::filesystem::path& path);
 

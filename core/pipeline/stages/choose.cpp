@@ -1,6 +1,7 @@
 // choose: the carving rules the mission calls for. Shadow-aware carving where the views look
 // at the scene from several sides (fast engine); beam-aware carving's keep level, measured on
 // the mission's own denoised frames, and what a dark pixel means after the detector.
+#include "pipeline/heading_sectors.h"
 #include "pipeline/keep_level.h"
 #include "pipeline/run_context.h"
 #include "pipeline/shadow_carving.h"
@@ -20,6 +21,11 @@ class ChooseStage : public Stage {
           chooseShadowCarving(run.params.shadow_aware_carving, run.posed);
       carve.shadow_aware = shadow.on;
       run.choose(shadow.choice);
+      // Heading sectors (stage "heading sectors") set voxels back into the whole map.
+      if (run.evicting && run.params.heading_sectors &&
+          carvesBySector(run.posed, run.sonar.range().maxRange())) {
+        run.evicting = false;
+      }
     }
     // A run that only resolves a loaded map's surface reads no frame for the keep level.
     if (!carvesMainLobe(run.sonar, carve) || !run.carve_frames) {

@@ -20,6 +20,7 @@ std::unique_ptr<Stage> makeDenoiseStage();
 std::unique_ptr<Stage> makeBeamCheckStage();
 std::unique_ptr<Stage> makeChooseStage();
 std::unique_ptr<Stage> makeCarveStage();
+std::unique_ptr<Stage> makeSectorStage();
 std::unique_ptr<Stage> makeSurfaceStage();
 std::unique_ptr<Stage> makeMeshStage();
 /// fit: only in runs with fit.enabled, after surface (Pipeline adds it).
