@@ -22,6 +22,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools assimp-utils
   # PROJ's cs2cs: the georeferenced export is checked against it (tests/e2e/geodetic_nav_test.cpp)
   proj-bin
+  # GDAL's gdalinfo and gdalsrsinfo: the GeoTIFF and LAS exports' CRS, extent and heights are
+  # checked with them (tests/e2e/geodetic_nav_test.cpp, seabed_grid_test.cpp)
+  gdal-bin
   # a headless browser: the survey report (report.html) opens offline in it (tests/e2e/report_page_test.cpp)
   chromium
   # the Debian package (packaging/README.md): CPack's DEB generator, man pages, the package test

@@ -23,8 +23,8 @@ void addExportCommand(CLI::App& app, int& exit_code) {
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("reconstruction", o->reconstruction, "Folder written by reconstruct")->required();
-  cmd->add_option("--out", o->out, "File to write (.ply, .stl, .obj)")->required();
-  cmd->add_option("--format", o->format, "ply | ply-ascii | stl | obj (default: from --out)");
+  cmd->add_option("--out", o->out, "File to write (.ply, .stl, .obj, .las)")->required();
+  cmd->add_option("--format", o->format, "ply | ply-ascii | stl | obj | las (default: from --out)");
   cmd->add_option("--frame", o->frame,
                   "ned (as inside) | zup (x east, y north, z up, for CAD tools)")
       ->capture_default_str();
@@ -33,9 +33,11 @@ void addExportCommand(CLI::App& app, int& exit_code) {
       ->expected(6);
   cmd->add_option("--crs", o->crs,
                   "World coordinates in this projected CRS (EPSG:NNNN or a PROJ string): x "
-                  "easting, y northing, z up, in double (PLY, OBJ; not STL); needs a "
+                  "easting, y northing, z up, in double (PLY, OBJ, LAS; not STL); needs a "
                   "reconstruction with a CRS (its PLY comment crs)");
-  cmd->add_flag("--points", o->points, "Export the surface points instead of the mesh (PLY)");
+  cmd->add_flag("--points", o->points,
+                "Export the surface points instead of the mesh (PLY; LAS always holds "
+                "the points: x east, y north, z up, in the mission's CRS when it has one)");
   cmd->add_flag("--add-origin", o->add_origin,
                 "World coordinates: add back the mission origin the reconstruction is local to "
                 "(its PLY comment origin_ned_m), in double (PLY double, OBJ 6 decimals; not STL)");
@@ -65,18 +67,24 @@ void addExportCommand(CLI::App& app, int& exit_code) {
       std::cerr << "warning: the run that wrote " << folder.string()
                 << " was cancelled: its map holds the frames carved before\n";
     }
-    const std::filesystem::path input = folder / (o->points ? "surface_points.ply" : "mesh.ply");
+    const bool points = o->points || options.format == "las";
+    const std::filesystem::path input = folder / (points ? "surface_points.ply" : "mesh.ply");
     options.mission_origin_ned_m = plyOrigin(input);
     options.add_mission_origin = o->add_origin;
     options.mission_crs = plyCrs(input);
     options.target_crs = o->crs;
-    if (o->points) {
+    if (points) {
       exportPoints(readSurfacePointsPly(input), o->out, options);
     } else {
       exportMesh(readMeshPly(input), o->out, options);
     }
-    std::cout << "wrote " << o->out << " (" << options.format << ", " << options.frame << " frame, "
-              << (!o->crs.empty() ? "world coordinates in " + o->crs
+    const bool las = options.format == "las";
+    const std::string crs = !o->crs.empty()            ? o->crs
+                            : las && o->origin.empty() ? options.mission_crs
+                                                       : "";
+    std::cout << "wrote " << o->out << " (" << options.format << ", "
+              << (las ? std::string("x east, y north, z up") : options.frame + " frame") << ", "
+              << (!crs.empty()    ? "world coordinates in " + crs
                   : o->add_origin ? "world coordinates"
                                   : "local to the origin " + nedText(options.mission_origin_ned_m))
               << ")\n";

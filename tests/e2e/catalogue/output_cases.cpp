@@ -262,6 +262,24 @@ std::vector<CatalogueCase> outputCases() {
       exportFullDisk("ExportPlyOnAFullDisk", "mesh.ply"),
       exportFullDisk("ExportAsciiPlyOnAFullDisk", "mesh_ascii.ply", " --format ply-ascii"),
       exportFullDisk("ExportPointsOnAFullDisk", "points.ply", " --points"),
+      exportFullDisk("ExportLasOnAFullDisk", "points.las"),
+      // LAS (issue 43) to a target that cannot be written: a folder where files cannot be
+      // created, a folder in the file's place; nothing is left behind.
+      {.name = "ExportLasIntoAFolderThatCannotBeWritten",
+       .prepare =
+           [](const Workspace& ws) {
+             return "export " + writeReconstruction(ws) + " --format las --out /sys/points.las";
+           },
+       .message = {"/sys/points.las: cannot create a file in /sys"}},
+      {.name = "ExportLasOntoAFolder",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "points.las");
+             writePrevious(ws / "points.las/inside");
+             return "export " + writeReconstruction(ws) + " --out points.las";
+           },
+       .message = {"points.las: is a directory: expected a regular file or a new path"},
+       .intact = {"points.las/inside"}},
       {.name = "NoiseModelOnAFullDisk",
        .prepare =
            [](const Workspace& ws) {
