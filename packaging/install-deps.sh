@@ -11,6 +11,8 @@ packages=(
   libopencv-core-dev libopencv-imgproc-dev libpng-dev zlib1g-dev
   # coordinate reference systems (core/geo/): PROJ and its database of CRSs
   libproj-dev proj-data
+  # the seabed's elevation grid as GeoTIFF (core/io/raster/): GDAL
+  libgdal-dev
   # the tests read and write pictures with OpenCV too
   libopencv-imgcodecs-dev
   # ROS 2 bags: SQLite3 storage, lz4 and zstd chunks of MCAP files

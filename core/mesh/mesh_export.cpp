@@ -14,6 +14,8 @@
 #include "io/mesh/las_file.h"
 #include "io/mesh/ply_check.h"
 #include "io/mesh/point_cloud_ply.h"
+#include "io/raster/geotiff_file.h"
+#include "mesh/seabed_grid.h"
 #include "sonar/mission_origin.h"
 
 namespace sonarcarve {
@@ -321,10 +323,10 @@ void validateTarget(const ExportOptions& o) {
   }
 }
 
-// LAS holds x east, y north, z up: in the target CRS, else in the mission's CRS (its world
-// coordinates are that CRS's), else local (or world with add-origin) NED turned to Z-up with
-// no CRS record.
-ExportOptions lasOptions(const ExportOptions& o) {
+// LAS and GeoTIFF hold x east, y north, z up: in the target CRS, else in the mission's CRS
+// (its world coordinates are that CRS's), else local (or world with add-origin) NED turned to
+// Z-up with no CRS.
+ExportOptions zUpOptions(const ExportOptions& o) {
   ExportOptions las = o;
   if (las.target_crs.empty() && !las.mission_crs.empty() && las.origin_ned_m.isZero()) {
     las.target_crs = las.mission_crs;
@@ -358,8 +360,8 @@ std::string lasFileBytes(const SurfacePoints& points, const std::filesystem::pat
 
 void ExportOptions::validate() const {
   if (format != "ply" && format != "ply-ascii" && format != "stl" && format != "obj" &&
-      format != "las") {
-    throw Error("export", "format", "expected ply, ply-ascii, stl, obj or las");
+      format != "las" && format != "geotiff") {
+    throw Error("export", "format", "expected ply, ply-ascii, stl, obj, las or geotiff");
   }
   if (frame != "ned" && frame != "zup") {
     throw Error("export", "frame", "expected ned or zup");
@@ -386,13 +388,17 @@ std::string formatOfPath(const std::filesystem::path& path) {
   if (ext == ".ply" || ext == ".stl" || ext == ".obj" || ext == ".las") {
     return ext.substr(1);
   }
-  throw Error(path.string(), "", "unknown file type: expected .ply, .stl, .obj or .las");
+  if (ext == ".tif" || ext == ".tiff") {
+    return "geotiff";
+  }
+  throw Error(path.string(), "", "unknown file type: expected .ply, .stl, .obj, .las or .tif");
 }
 
 void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const ExportOptions& options) {
   options.validate();
-  if (options.format == "las") {
-    throw Error(path.string(), "", "LAS holds points: expected the surface points (--points)");
+  if (options.format == "las" || options.format == "geotiff") {
+    throw Error(path.string(), "",
+                options.format + " is made from points: expected the surface points (--points)");
   }
   const Prepared m = prepared(mesh, options);
   if (m.triangles.empty()) {
@@ -411,7 +417,7 @@ void exportPoints(const SurfacePoints& points, const std::filesystem::path& path
                   const ExportOptions& options) {
   options.validate();
   if (options.format == "las") {
-    const ExportOptions las = lasOptions(options);
+    const ExportOptions las = zUpOptions(options);
     las.validate();
     writeFileAtomically(path, lasFileBytes(points, path, las));
     return;
@@ -420,6 +426,22 @@ void exportPoints(const SurfacePoints& points, const std::filesystem::path& path
     throw Error(path.string(), "", "points are exported as PLY or LAS only");
   }
   writeFileAtomically(path, plyText(prepared(points, options), options.format == "ply-ascii"));
+}
+
+void exportSeabedGrid(const SurfacePoints& points, const std::filesystem::path& path,
+                      const ExportOptions& options, const SeabedGridParams& grid) {
+  options.validate();
+  const ExportOptions o = zUpOptions(options);
+  o.validate();
+  HeightRaster raster = seabedGrid(prepared(points, o).positions, grid);
+  if (!o.target_crs.empty()) {
+    raster.crs_wkt = crsWkt(o.target_crs, "export", "crs");
+  }
+  raster.description =
+      "seabed height, up (= -depth), metres: per cell the median of the points "
+      "within " +
+      shortestNumber(grid.band_m()) + " m above its lowest surface";
+  writeGeoTiff(path, raster);
 }
 
 Mesh readMeshPly(const std::filesystem::path& path) {

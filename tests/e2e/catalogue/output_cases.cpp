@@ -271,6 +271,20 @@ std::vector<CatalogueCase> outputCases() {
              return "export " + writeReconstruction(ws) + " --format las --out /sys/points.las";
            },
        .message = {"/sys/points.las: cannot create a file in /sys"}},
+      {.name = "ExportGeoTiffIntoAFolderThatCannotBeWritten",
+       .prepare =
+           [](const Workspace& ws) {
+             return "export " + writeReconstruction(ws) + " --out /sys/seabed.tif";
+           },
+       .message = {"/sys/seabed.tif: cannot create a file in /sys"}},
+      {.name = "ExportGeoTiffWithCellsTooSmall",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "seabed.tif");
+             return "export " + writeReconstruction(ws) + " --cell 0.00001 --out seabed.tif";
+           },
+       .message = {"export: cell", "cells over the points: expected a larger cell"},
+       .intact = {"seabed.tif"}},
       {.name = "ExportLasOntoAFolder",
        .prepare =
            [](const Workspace& ws) {
