@@ -84,10 +84,7 @@ class GeodeticNavigation : public ::testing::Test {
   // position kGridOffsetEN + east, north), headings from true north, and a geodetic origin
   // at kGridOffsetEN; its ground truth files, in the twin's frame, are left out.
   static void writeGeodeticTwin() {
-    std::filesystem::copy(path("ned"), path("geodetic"), std::filesystem::copy_options::recursive);
-    for (const char* truth : {"ground_truth.ply", "visible_points.ply", "ground_truth_poses.csv"}) {
-      std::filesystem::remove(path("geodetic") / truth);
-    }
+    test::copyMissionWithoutTruth(path("ned"), path("geodetic"));
     const NavTrack nav = readNavCsv(path("ned") / "nav.csv");
     std::vector<Eigen::Vector3d> grid = {{kGridOffsetEN.x(), kGridOffsetEN.y(), 0.0}};
     for (const NavSample& s : nav.samples()) {

@@ -70,10 +70,7 @@ class SeabedGeoTiff : public ::testing::Test {
   // The simulated mission with north and east moved by (kNorth0_m, kEast0_m) on the grid of
   // UTM 31N; its ground truth, in the simulator's frame, is left out of it.
   static void writeUtmTwin() {
-    std::filesystem::copy(path("sim"), path("utm"), std::filesystem::copy_options::recursive);
-    for (const char* truth : {"ground_truth.ply", "visible_points.ply", "ground_truth_poses.csv"}) {
-      std::filesystem::remove(path("utm") / truth);
-    }
+    test::copyMissionWithoutTruth(path("sim"), path("utm"));
     std::istringstream in(test::readText(path("sim") / "nav.csv"));
     std::string line;
     std::getline(in, line);
