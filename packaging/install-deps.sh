@@ -11,6 +11,8 @@ packages=(
   libopencv-core-dev libopencv-imgproc-dev libpng-dev zlib1g-dev
   # coordinate reference systems (core/geo/): PROJ and its database of CRSs
   libproj-dev proj-data
+  # the seabed's elevation grid as GeoTIFF (core/io/raster/): GDAL
+  libgdal-dev
   # the tests read and write pictures with OpenCV too
   libopencv-imgcodecs-dev
   # ROS 2 bags: SQLite3 storage, lz4 and zstd chunks of MCAP files
@@ -22,6 +24,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth octomap-tools assimp-utils
   # PROJ's cs2cs: the georeferenced export is checked against it (tests/e2e/geodetic_nav_test.cpp)
   proj-bin
+  # GDAL's gdalinfo and gdalsrsinfo: the GeoTIFF and LAS exports' CRS, extent and heights are
+  # checked with them (tests/e2e/geodetic_nav_test.cpp, seabed_grid_test.cpp)
+  gdal-bin
   # a headless browser: the survey report (report.html) opens offline in it (tests/e2e/report_page_test.cpp)
   chromium
   # the Debian package (packaging/README.md): CPack's DEB generator, man pages, the package test

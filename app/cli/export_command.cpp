@@ -8,9 +8,21 @@
 #include "io/mesh/point_cloud_ply.h"
 #include "io/run/run_manifest.h"
 #include "mesh/mesh_export.h"
+#include "pipeline/reconstruction_params.h"
 #include "sonar/mission_origin.h"
 
 namespace sonarcarve::cli {
+namespace {
+
+// The voxel size the reconstruction was carved at (its params.yaml), or the default's.
+double voxelSizeOf(const std::filesystem::path& folder) {
+  const auto file = folder / "params.yaml";
+  return std::filesystem::exists(file)
+             ? ReconstructionParams::fromYamlFile(file.string()).carve.voxel_size_m
+             : ReconstructionParams().carve.voxel_size_m;
+}
+
+}  // namespace
 
 void addExportCommand(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand(
@@ -18,13 +30,15 @@ void addExportCommand(CLI::App& app, int& exit_code) {
   struct Options {
     std::string reconstruction, out, format, frame = "ned", crs;
     std::vector<double> origin, crop;
+    double cell_m = 0.25;
     bool points = false;
     bool add_origin = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("reconstruction", o->reconstruction, "Folder written by reconstruct")->required();
-  cmd->add_option("--out", o->out, "File to write (.ply, .stl, .obj)")->required();
-  cmd->add_option("--format", o->format, "ply | ply-ascii | stl | obj (default: from --out)");
+  cmd->add_option("--out", o->out, "File to write (.ply, .stl, .obj, .las, .tif)")->required();
+  cmd->add_option("--format", o->format,
+                  "ply | ply-ascii | stl | obj | las | geotiff (default: from --out)");
   cmd->add_option("--frame", o->frame,
                   "ned (as inside) | zup (x east, y north, z up, for CAD tools)")
       ->capture_default_str();
@@ -33,9 +47,16 @@ void addExportCommand(CLI::App& app, int& exit_code) {
       ->expected(6);
   cmd->add_option("--crs", o->crs,
                   "World coordinates in this projected CRS (EPSG:NNNN or a PROJ string): x "
-                  "easting, y northing, z up, in double (PLY, OBJ; not STL); needs a "
+                  "easting, y northing, z up, in double (PLY, OBJ, LAS; not STL); needs a "
                   "reconstruction with a CRS (its PLY comment crs)");
-  cmd->add_flag("--points", o->points, "Export the surface points instead of the mesh (PLY)");
+  cmd->add_option("--cell", o->cell_m,
+                  "geotiff: edge of the seabed grid's cells, m (the grid: docs/formats.md, "
+                  "\"Seabed elevation (GeoTIFF)\")")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--points", o->points,
+                "Export the surface points instead of the mesh (PLY; LAS always holds "
+                "the points: x east, y north, z up, in the mission's CRS when it has one)");
   cmd->add_flag("--add-origin", o->add_origin,
                 "World coordinates: add back the mission origin the reconstruction is local to "
                 "(its PLY comment origin_ned_m), in double (PLY double, OBJ 6 decimals; not STL)");
@@ -65,18 +86,30 @@ void addExportCommand(CLI::App& app, int& exit_code) {
       std::cerr << "warning: the run that wrote " << folder.string()
                 << " was cancelled: its map holds the frames carved before\n";
     }
-    const std::filesystem::path input = folder / (o->points ? "surface_points.ply" : "mesh.ply");
+    const bool geotiff = options.format == "geotiff";
+    const bool points = o->points || options.format == "las" || geotiff;
+    const std::filesystem::path input = folder / (points ? "surface_points.ply" : "mesh.ply");
     options.mission_origin_ned_m = plyOrigin(input);
     options.add_mission_origin = o->add_origin;
     options.mission_crs = plyCrs(input);
     options.target_crs = o->crs;
-    if (o->points) {
+    if (geotiff) {
+      SeabedGridParams grid;
+      grid.cell_m = o->cell_m;
+      grid.voxel_size_m = voxelSizeOf(folder);
+      exportSeabedGrid(readSurfacePointsPly(input), o->out, options, grid);
+    } else if (points) {
       exportPoints(readSurfacePointsPly(input), o->out, options);
     } else {
       exportMesh(readMeshPly(input), o->out, options);
     }
-    std::cout << "wrote " << o->out << " (" << options.format << ", " << options.frame << " frame, "
-              << (!o->crs.empty() ? "world coordinates in " + o->crs
+    const bool las = options.format == "las" || geotiff;
+    const std::string crs = !o->crs.empty()            ? o->crs
+                            : las && o->origin.empty() ? options.mission_crs
+                                                       : "";
+    std::cout << "wrote " << o->out << " (" << options.format << ", "
+              << (las ? std::string("x east, y north, z up") : options.frame + " frame") << ", "
+              << (!crs.empty()    ? "world coordinates in " + crs
                   : o->add_origin ? "world coordinates"
                                   : "local to the origin " + nedText(options.mission_origin_ned_m))
               << ")\n";

@@ -66,6 +66,28 @@ std::string crsName(const std::string& definition) {
   return name != nullptr && *name != '\0' ? std::string(name) : definition;
 }
 
+std::string crsWkt(const std::string& definition, const std::string& file,
+                   const std::string& field) {
+  const proj::Context context = proj::quietContext();
+  const proj::Object crs(proj_create(context.get(), definition.c_str()));
+  if (!crs || !proj_is_crs(crs.get())) {
+    throw Error(file, field,
+                "'" + definition + "' is not a CRS PROJ knows (" + proj::lastError(context.get()) +
+                    "): expected an EPSG code, a PROJ string or WKT");
+  }
+  const char* options[] = {"MULTILINE=NO", nullptr};
+  const char* wkt = proj_as_wkt(context.get(), crs.get(), PJ_WKT1_GDAL, options);
+  if (wkt == nullptr) {
+    wkt = proj_as_wkt(context.get(), crs.get(), PJ_WKT2_2019, options);
+  }
+  if (wkt == nullptr) {
+    throw Error(file, field,
+                "PROJ cannot write '" + definition + "' as WKT (" + proj::lastError(context.get()) +
+                    "): expected a CRS with a WKT form");
+  }
+  return wkt;
+}
+
 std::string utmZoneCrs(double latitude_deg, double longitude_deg) {
   const int zone =
       std::clamp(static_cast<int>(std::floor((longitude_deg + 180.0) / 6.0)) + 1, 1, 60);

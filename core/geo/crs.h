@@ -24,6 +24,12 @@ void requireGridCrs(const std::string& definition, const std::string& file,
 /// PROJ's name of a CRS ("WGS 84 / UTM zone 31N"), or the definition itself if PROJ has none.
 std::string crsName(const std::string& definition);
 
+/// The CRS as OGC WKT 1 in GDAL's dialect (what LAS 1.4's WKT record and GeoTIFF readers expect),
+/// from PROJ (proj_as_wkt); a CRS WKT 1 cannot express comes as WKT2:2019. Throws Error(file,
+/// field, ...) when PROJ does not know it.
+std::string crsWkt(const std::string& definition, const std::string& file,
+                   const std::string& field);
+
 /// The WGS84 UTM zone CRS ("EPSG:32631") whose zone holds `longitude_deg`, north or south of
 /// the equator by `latitude_deg`: zones of 6 degrees from 180 W, without the Norway and
 /// Svalbard exceptions. A zone number only: PROJ projects.

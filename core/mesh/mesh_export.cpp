@@ -1,5 +1,6 @@
 #include "mesh/mesh_export.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <iomanip>
@@ -10,8 +11,11 @@
 #include "geo/crs.h"
 #include "geo/crs_transform.h"
 #include "io/files/atomic_file.h"
+#include "io/mesh/las_file.h"
 #include "io/mesh/ply_check.h"
 #include "io/mesh/point_cloud_ply.h"
+#include "io/raster/geotiff_file.h"
+#include "mesh/seabed_grid.h"
 #include "sonar/mission_origin.h"
 
 namespace sonarcarve {
@@ -319,11 +323,45 @@ void validateTarget(const ExportOptions& o) {
   }
 }
 
+// LAS and GeoTIFF hold x east, y north, z up: in the target CRS, else in the mission's CRS
+// (its world coordinates are that CRS's), else local (or world with add-origin) NED turned to
+// Z-up with no CRS.
+ExportOptions zUpOptions(const ExportOptions& o) {
+  ExportOptions las = o;
+  if (las.target_crs.empty() && !las.mission_crs.empty() && las.origin_ned_m.isZero()) {
+    las.target_crs = las.mission_crs;
+    las.add_mission_origin = false;
+  }
+  if (las.target_crs.empty()) {
+    las.frame = "zup";
+  }
+  return las;
+}
+
+std::string lasFileBytes(const SurfacePoints& points, const std::filesystem::path& path,
+                         const ExportOptions& o) {
+  const Prepared m = prepared(points, o);
+  LasCloud cloud;
+  if (!o.target_crs.empty()) {
+    cloud.crs_wkt = crsWkt(o.target_crs, "export", "crs");
+  }
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    LasPoint p;
+    p.xyz = m.positions[i];
+    p.intensity =
+        static_cast<std::uint16_t>(std::clamp(std::round(m.intensity[i]), 0.0f, 65535.0f));
+    p.user_data = static_cast<std::uint8_t>(std::min<std::uint32_t>(m.views[i], 255));
+    cloud.points.push_back(p);
+  }
+  return lasBytes(cloud, path.string());
+}
+
 }  // namespace
 
 void ExportOptions::validate() const {
-  if (format != "ply" && format != "ply-ascii" && format != "stl" && format != "obj") {
-    throw Error("export", "format", "expected ply, ply-ascii, stl or obj");
+  if (format != "ply" && format != "ply-ascii" && format != "stl" && format != "obj" &&
+      format != "las" && format != "geotiff") {
+    throw Error("export", "format", "expected ply, ply-ascii, stl, obj, las or geotiff");
   }
   if (frame != "ned" && frame != "zup") {
     throw Error("export", "frame", "expected ned or zup");
@@ -347,14 +385,21 @@ std::string formatOfPath(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   for (char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".ply" || ext == ".stl" || ext == ".obj") {
+  if (ext == ".ply" || ext == ".stl" || ext == ".obj" || ext == ".las") {
     return ext.substr(1);
   }
-  throw Error(path.string(), "", "unknown file type: expected .ply, .stl or .obj");
+  if (ext == ".tif" || ext == ".tiff") {
+    return "geotiff";
+  }
+  throw Error(path.string(), "", "unknown file type: expected .ply, .stl, .obj, .las or .tif");
 }
 
 void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const ExportOptions& options) {
   options.validate();
+  if (options.format == "las" || options.format == "geotiff") {
+    throw Error(path.string(), "",
+                options.format + " is made from points: expected the surface points (--points)");
+  }
   const Prepared m = prepared(mesh, options);
   if (m.triangles.empty()) {
     throw Error(path.string(), "", "no triangle to export (empty mesh or crop box)");
@@ -371,10 +416,32 @@ void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const Expor
 void exportPoints(const SurfacePoints& points, const std::filesystem::path& path,
                   const ExportOptions& options) {
   options.validate();
+  if (options.format == "las") {
+    const ExportOptions las = zUpOptions(options);
+    las.validate();
+    writeFileAtomically(path, lasFileBytes(points, path, las));
+    return;
+  }
   if (options.format != "ply" && options.format != "ply-ascii") {
-    throw Error(path.string(), "", "points are exported as PLY only");
+    throw Error(path.string(), "", "points are exported as PLY or LAS only");
   }
   writeFileAtomically(path, plyText(prepared(points, options), options.format == "ply-ascii"));
+}
+
+void exportSeabedGrid(const SurfacePoints& points, const std::filesystem::path& path,
+                      const ExportOptions& options, const SeabedGridParams& grid) {
+  options.validate();
+  const ExportOptions o = zUpOptions(options);
+  o.validate();
+  HeightRaster raster = seabedGrid(prepared(points, o).positions, grid);
+  if (!o.target_crs.empty()) {
+    raster.crs_wkt = crsWkt(o.target_crs, "export", "crs");
+  }
+  raster.description =
+      "seabed height, up (= -depth), metres: per cell the median of the points "
+      "within " +
+      shortestNumber(grid.band_m()) + " m above its lowest surface";
+  writeGeoTiff(path, raster);
 }
 
 Mesh readMeshPly(const std::filesystem::path& path) {

@@ -3,6 +3,12 @@
 //              and triangles; `ply-ascii` the same in ASCII
 //   stl        binary STL (triangles only)
 //   obj        Wavefront OBJ with vertex normals
+//   las        LAS 1.4 point cloud (points only, io/mesh/las_file.h): x east(ing), y
+//              north(ing), z up; in the target CRS, else in the mission's CRS (world
+//              coordinates), with the CRS's WKT; without a CRS local (or world with
+//              add_mission_origin) and no CRS record
+//   geotiff    the seabed's elevation grid from the points (mesh/seabed_grid.h), Float32
+//              heights up in metres, in the same coordinates and CRS as las (GDAL)
 // Units are metres. Coordinates inside are local to the mission origin (sonar/mission_origin.h);
 // `add_mission_origin` adds it back (world coordinates, written in double: PLY `property
 // double`, OBJ with 6 decimals; STL, float32 only, is refused). Frames: `ned` writes north,
@@ -24,14 +30,15 @@
 #include <optional>
 #include <string>
 
+#include "mesh/seabed_grid.h"
 #include "mesh/surface_mesher.h"
 #include "occlusion/surface_points.h"
 
 namespace sonarcarve {
 
 struct ExportOptions {
-  std::string format = "ply";                              ///< ply | ply-ascii | stl | obj
-  std::string frame = "ned";                               ///< ned | zup
+  std::string format = "ply";  ///< ply | ply-ascii | stl | obj | las, geotiff (points)
+  std::string frame = "ned";   ///< ned | zup
   Eigen::Vector3d origin_ned_m = Eigen::Vector3d::Zero();  ///< subtracted first
   std::optional<Eigen::AlignedBox3d> crop_ned_m;
   /// The origin the coordinates given are local to (the mission's): world = local + it.
@@ -45,13 +52,18 @@ struct ExportOptions {
   void validate() const;
 };
 
-/// The format a file name asks for (.ply, .stl, .obj), or throws Error.
+/// The format a file name asks for (.ply, .stl, .obj, .las, .tif/.tiff), or throws Error.
 std::string formatOfPath(const std::filesystem::path& path);
 
 void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const ExportOptions& options);
-/// Points as PLY (ply or ply-ascii) with intensity and views; other formats refused.
+/// Points as PLY (ply or ply-ascii) with intensity and views, or LAS (intensity rounded to
+/// 16 bits, views in user data up to 255); other formats refused.
 void exportPoints(const SurfacePoints& points, const std::filesystem::path& path,
                   const ExportOptions& options);
+/// The seabed's elevation grid (mesh/seabed_grid.h) of the points as GeoTIFF (format
+/// geotiff), x east(ing), y north(ing) as for LAS, with the CRS when there is one.
+void exportSeabedGrid(const SurfacePoints& points, const std::filesystem::path& path,
+                      const ExportOptions& options, const SeabedGridParams& grid);
 /// Reads a mesh written by exportMesh in PLY (any frame; no conversion back).
 Mesh readMeshPly(const std::filesystem::path& path);
 

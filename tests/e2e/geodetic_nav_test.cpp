@@ -18,6 +18,7 @@
 #include "occlusion/surface_points.h"
 #include "sonar/attitude.h"
 #include "support/cli_runner.h"
+#include "support/las_read_back.h"
 #include "support/test_support.h"
 
 namespace sonarcarve {
@@ -83,10 +84,7 @@ class GeodeticNavigation : public ::testing::Test {
   // position kGridOffsetEN + east, north), headings from true north, and a geodetic origin
   // at kGridOffsetEN; its ground truth files, in the twin's frame, are left out.
   static void writeGeodeticTwin() {
-    std::filesystem::copy(path("ned"), path("geodetic"), std::filesystem::copy_options::recursive);
-    for (const char* truth : {"ground_truth.ply", "visible_points.ply", "ground_truth_poses.csv"}) {
-      std::filesystem::remove(path("geodetic") / truth);
-    }
+    test::copyMissionWithoutTruth(path("ned"), path("geodetic"));
     const NavTrack nav = readNavCsv(path("ned") / "nav.csv");
     std::vector<Eigen::Vector3d> grid = {{kGridOffsetEN.x(), kGridOffsetEN.y(), 0.0}};
     for (const NavSample& s : nav.samples()) {
@@ -221,6 +219,53 @@ TEST_F(GeodeticNavigation, ExportInUtmMatchesCs2csToAMillimetre) {
                           quoted(path("mesh31.stl")));
   EXPECT_NE(stl.exit_code, 0);
   EXPECT_NE(stl.output.find("STL holds float32"), std::string::npos) << stl.output;
+}
+
+// LAS 1.4 in UTM 31N: the points read back (support/las_read_back.h) where cs2cs puts the
+// mission origin plus their local offsets, to 1 mm; the CRS record is UTM 31N by GDAL's
+// gdalsrsinfo (gdal-bin, packaging/install-deps.sh). Without --crs the LAS is in the mission's
+// CRS, the same points.
+TEST_F(GeodeticNavigation, LasReadsBackToTheMillimetreWithItsCrs) {
+  const auto las_file = path("utm31.las");
+  const auto exported = runCli("export " + quoted(path("out-geodetic")) +
+                               " --format las --crs EPSG:32631 --out " + quoted(las_file));
+  ASSERT_EQ(exported.exit_code, 0) << exported.output;
+  const test::LasReadBack las = test::readLasBack(las_file);
+  EXPECT_EQ(las.point_format, 6);
+  EXPECT_EQ(las.global_encoding & 0x10, 0x10);
+  const SurfacePoints local = readSurfacePointsPly(path("out-geodetic") / "surface_points.ply");
+  ASSERT_EQ(las.points.size(), local.size());
+  const Eigen::Vector3d origin =
+      cs2cs(dir_->path(), "EPSG:4326", "EPSG:32631", {origin_lat_lon_}).front();
+  double worst_m = 0.0;
+  for (std::size_t i = 0; i < las.points.size(); ++i) {
+    const Eigen::Vector3d p = local[i].position_m.cast<double>();
+    const Eigen::Vector3d expected(origin.x() + p.y(), origin.y() + p.x(), -p.z());
+    worst_m = std::max(worst_m, (las.points[i] - expected).norm());
+  }
+  EXPECT_LE(worst_m, kCs2csAgreement_m);
+  RecordProperty("worst_las_cs2cs_difference_mm", std::to_string(worst_m * 1e3));
+
+  test::writeText(path("las.wkt"), las.wkt);
+  const auto srs = test::runShell("gdalsrsinfo -o epsg " + quoted(path("las.wkt")) + " 2>&1");
+  EXPECT_EQ(srs.exit_code, 0) << "GDAL's gdalsrsinfo (Debian gdal-bin): " << srs.output;
+  EXPECT_NE(srs.output.find("EPSG:32631"), std::string::npos) << srs.output;
+
+  const auto mission_crs = runCli("export " + quoted(path("out-geodetic")) +
+                                  " --format las --out " + quoted(path("mission.las")));
+  ASSERT_EQ(mission_crs.exit_code, 0) << mission_crs.output;
+  EXPECT_EQ(test::readText(path("mission.las")), test::readText(las_file));
+
+  // A reconstruction without a CRS: local coordinates, x east, y north, z up, no CRS record.
+  const auto ned =
+      runCli("export " + quoted(path("out-ned")) + " --out " + quoted(path("local.las")));
+  ASSERT_EQ(ned.exit_code, 0) << ned.output;
+  const test::LasReadBack local_las = test::readLasBack(path("local.las"));
+  EXPECT_TRUE(local_las.wkt.empty());
+  const SurfacePoints ned_points = readSurfacePointsPly(path("out-ned") / "surface_points.ply");
+  ASSERT_EQ(local_las.points.size(), ned_points.size());
+  const Eigen::Vector3d n = ned_points.front().position_m.cast<double>();
+  EXPECT_LE((local_las.points.front() - Eigen::Vector3d(n.y(), n.x(), -n.z())).norm(), 1e-4);
 }
 
 TEST_F(GeodeticNavigation, ExportRefusesWhatItCannotPlace) {

@@ -111,6 +111,9 @@ void decodeBag(const RosBag& bag) {
         case RosMessageKind::Transforms:
           decodeTfMessage(bytes, source, m.place);
           break;
+        case RosMessageKind::GeoFix:
+          decodeNavSatFix(bytes, source, m.place);
+          break;
         case RosMessageKind::Other:
           decodeRosHeader(bytes, source, m.place);
           break;

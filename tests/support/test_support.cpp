@@ -124,3 +124,14 @@ std::vector<Eigen::Vector3d> readAsciiPlyPoints(const std::filesystem::path& pat
 }
 
 }  // namespace sonarcarve::test
+
+namespace sonarcarve::test {
+
+void copyMissionWithoutTruth(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::filesystem::copy(from, to, std::filesystem::copy_options::recursive);
+  for (const char* truth : {"ground_truth.ply", "visible_points.ply", "ground_truth_poses.csv"}) {
+    std::filesystem::remove(to / truth);
+  }
+}
+
+}  // namespace sonarcarve::test

@@ -67,6 +67,10 @@ void expectError(Run run, const std::vector<std::string>& fragments) {
   }
 }
 void writeText(const std::filesystem::path& path, const std::string& text);
+/// A copy of the simulated mission `from` at `to` without its ground truth files
+/// (ground_truth.ply, visible_points.ply, ground_truth_poses.csv), which are in the frame of
+/// `from`'s navigation: for twins whose navigation is given in another frame.
+void copyMissionWithoutTruth(const std::filesystem::path& from, const std::filesystem::path& to);
 /// A file of `bytes` that takes no disk (sparse, all zeros); fails the test if it cannot be.
 void writeSparseFile(const std::filesystem::path& path, std::uint64_t bytes);
 /// The x, y, z of an ASCII PLY's vertices, in double (a float reader would lose the metres'

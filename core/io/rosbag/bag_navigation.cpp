@@ -43,7 +43,7 @@ BagNavigation bagNavigation(std::vector<TimedPose> poses, const std::string& sou
     s.q_world_vehicle = Eigen::Quaterniond(T.linear()).normalized();
     samples.push_back(s);
   }
-  return {NavTrack(std::move(samples)), conventions, body, duplicates};
+  return {NavTrack(std::move(samples)), conventions, body, duplicates, topic, ""};
 }
 
 std::optional<Mounting> bagMounting(const std::vector<RosTransformMsg>& transforms,

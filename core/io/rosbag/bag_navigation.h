@@ -27,6 +27,8 @@ struct BagNavigation {
   RosFrameConventions conventions;
   std::string body_frame;      ///< child_frame_id, or "base_link" for PoseStamped types
   std::size_t duplicates = 0;  ///< samples left out: their time did not increase
+  std::string topic;           ///< the topic read, and what was assumed, for `info`
+  std::string description;
 };
 
 /// The track of poses (sorted by time; repeated times keep the first). Throws Error naming

@@ -51,6 +51,7 @@ constexpr const auto& enumNamesOf(BagTime) {
 struct BagOptions {
   std::string sonar_topic;  ///< empty: the only sonar image or raw Oculus ping topic
   std::string nav_topic;    ///< empty: the only Odometry / PoseStamped topic
+  std::string fix_topic;    ///< empty: the only sensor_msgs/NavSatFix topic, if any
   SonarAxes axes = SonarAxes::Auto;
   ImageLayout layout = ImageLayout::RangeMajor;
   BagTime time = BagTime::Header;

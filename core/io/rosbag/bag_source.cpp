@@ -10,11 +10,13 @@
 
 #include "common/error.h"
 #include "io/frame_source.h"
+#include "io/rosbag/bag_geofix.h"
 #include "io/rosbag/bag_navigation.h"
 #include "io/rosbag/bag_oculus.h"
 #include "io/rosbag/bag_sonar.h"
 #include "io/rosbag/bag_summary.h"
 #include "io/rosbag/ros_bag.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 namespace {
@@ -59,6 +61,8 @@ std::string kindName(RosMessageKind kind) {
       return "navigation (Odometry, PoseStamped or PoseWithCovarianceStamped)";
     case RosMessageKind::Transforms:
       return "transforms";
+    case RosMessageKind::GeoFix:
+      return "position fix (sensor_msgs/NavSatFix)";
     case RosMessageKind::Other:
       break;
   }
@@ -237,6 +241,70 @@ std::vector<RosTransformMsg> staticTransforms(const RosBag& bag,
   return all;
 }
 
+// The pose topic's track (Odometry, PoseStamped...), when the bag has one.
+std::optional<BagNavigation> poseNavigation(const RosBag& bag, const BagTopicKinds& kinds,
+                                            const OpenOptions& options,
+                                            std::vector<std::string>& problems) {
+  const auto nav_topic =
+      chooseTopic(bag, kinds, RosMessageKind::VehiclePose, options.bag.nav_topic, "--nav-topic");
+  if (!nav_topic) {
+    return std::nullopt;
+  }
+  requireCdr(bag, *nav_topic);
+  const std::string source = bag.path().string();
+  std::vector<TimedPose> poses;
+  const std::string type = bag.topics()[*nav_topic].type;
+  forEachMessage(bag, *nav_topic, problems, [&](std::size_t, const BagMessage& m, const auto& b) {
+    const RosPoseMsg pose = decodeRosPose(type, b, source, m.place);
+    poses.push_back({timeOf(m, pose.header, options.bag.time), pose});
+  });
+  const std::string name = bag.topics()[*nav_topic].name;
+  BagNavigation nav = bagNavigation(std::move(poses), source, name);
+  nav.topic = name;
+  nav.description = "navigation topic " + name + ": " + describe(nav.conventions) +
+                    ", converted to world NED, vehicle FRD";
+  if (nav.duplicates > 0) {
+    problems.push_back(source + ": topic " + name + ": " + std::to_string(nav.duplicates) +
+                       " poses whose time did not increase (left out)");
+  }
+  return nav;
+}
+
+// The vehicle's positions from the NavSatFix topic, its attitude from the pose topic's at each
+// fix; the mission's grid is the first fix's UTM zone, its origin the first fix (depth 0).
+void placeOnFixes(Mission& mission, const RosBag& bag, std::size_t topic,
+                  const std::optional<BagNavigation>& poses, const OpenOptions& options,
+                  std::vector<std::string>& problems, std::vector<std::string>& contents) {
+  requireCdr(bag, topic);
+  const std::string source = bag.path().string();
+  const std::string name = bag.topics()[topic].name;
+  std::vector<TimedFix> fixes;
+  forEachMessage(bag, topic, problems, [&](std::size_t, const BagMessage& m, const auto& bytes) {
+    const NavSatFixMsg fix = decodeNavSatFix(bytes, source, m.place);
+    fixes.push_back({timeOf(m, fix.header, options.bag.time), fix, m.place});
+  });
+  const std::optional<NavTrack> attitude =
+      poses ? std::optional<NavTrack>(poses->track) : std::nullopt;
+  const BagGeoNavigation geo = bagGeoNavigation(std::move(fixes), attitude, "", source, name);
+  mission.crs = geo.crs;
+  mission.origin_ned_m = geo.first_fix_ned_m;
+  mission.nav = translatedTrack(geo.track, -geo.first_fix_ned_m);
+  mission.nav_file = bag.path().filename().string() + " topic " + name;
+  contents.push_back("position topic " + name +
+                     " (sensor_msgs/NavSatFix): WGS84 latitude and longitude on the grid of " +
+                     geo.crs + ", down = -altitude, origin at the first fix; attitude " +
+                     (poses ? "from " + poses->topic + " at each fix's time"
+                            : std::string("level, heading north (no pose topic)")));
+  if (!poses) {
+    mission.warnings.push_back("no pose topic beside " + name +
+                               ": the vehicle's attitude is taken level, heading north");
+  }
+  const std::string left_out = leftOutFixes(geo);
+  if (!left_out.empty()) {
+    problems.push_back(source + ": topic " + name + ": fixes left out: " + left_out);
+  }
+}
+
 Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
   std::shared_ptr<const RosBag> bag = openRosBag(path);
   const std::string source = path.string();
@@ -277,29 +345,19 @@ Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
   std::string body_frame = "base_link";
   bool body_frd = false;
   if (options.nav_csv.empty()) {
-    const auto nav_topic =
-        chooseTopic(*bag, kinds, RosMessageKind::VehiclePose, options.bag.nav_topic, "--nav-topic");
-    if (nav_topic) {
-      requireCdr(*bag, *nav_topic);
-      std::vector<TimedPose> poses;
-      const std::string type = bag->topics()[*nav_topic].type;
-      forEachMessage(*bag, *nav_topic, problems,
-                     [&](std::size_t, const BagMessage& m, const auto& bytes) {
-                       const RosPoseMsg pose = decodeRosPose(type, bytes, source, m.place);
-                       poses.push_back({timeOf(m, pose.header, options.bag.time), pose});
-                     });
-      const std::string name = bag->topics()[*nav_topic].name;
-      BagNavigation nav = bagNavigation(std::move(poses), source, name);
-      mission.nav = std::move(nav.track);
-      mission.nav_file = path.filename().string() + " topic " + name;
-      body_frame = nav.body_frame;
-      body_frd = nav.conventions.body_frd;
-      contents.push_back("navigation topic " + name + ": " + describe(nav.conventions) +
-                         ", converted to world NED, vehicle FRD");
-      if (nav.duplicates > 0) {
-        problems.push_back(source + ": topic " + name + ": " + std::to_string(nav.duplicates) +
-                           " poses whose time did not increase (left out)");
-      }
+    std::optional<BagNavigation> poses = poseNavigation(*bag, kinds, options, problems);
+    if (poses) {
+      body_frame = poses->body_frame;
+      body_frd = poses->conventions.body_frd;
+      contents.push_back(poses->description);
+    }
+    const auto fix_topic =
+        chooseTopic(*bag, kinds, RosMessageKind::GeoFix, options.bag.fix_topic, "--fix-topic");
+    if (fix_topic) {
+      placeOnFixes(mission, *bag, *fix_topic, poses, options, problems, contents);
+    } else if (poses) {
+      mission.nav = std::move(poses->track);
+      mission.nav_file = path.filename().string() + " topic " + poses->topic;
     } else {
       mission.warnings.push_back(
           "no navigation topic in the bag and no --nav: the vehicle is stationary at the origin "

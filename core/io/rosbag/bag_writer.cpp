@@ -6,8 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "common/error.h"
+#include "geo/crs.h"
+#include "geo/crs_transform.h"
+#include "geo/grid_projection.h"
 #include "io/files/atomic_file.h"
 #include "io/rosbag/mcap_writer.h"
 #include "io/rosbag/ros_frames.h"
@@ -90,6 +94,51 @@ ProjectedSonarImageMsg sonarMessage(const SonarModel& sonar, const BagWriteOptio
   return msg;
 }
 
+// A mission's navigation samples as WGS84 fixes: the world position (local + origin) on the
+// mission's grid back to latitude and longitude by PROJ, and the attitude turned from grid
+// north to true north there (the inverse of geo/grid_projection.h's placeOnGrid).
+class GeoFixWriter {
+ public:
+  explicit GeoFixWriter(const Mission& mission)
+      : origin_(mission.origin_ned_m),
+        to_wgs84_(requireCrs(mission), kWgs84Crs, "bag writer", "crs"),
+        grid_(kWgs84Crs, mission.crs, "bag writer", "crs") {}
+
+  NavSatFixMsg fixOf(NavSample& s) const {
+    const Eigen::Vector3d world = s.position_m + origin_;
+    const auto lon_lat = to_wgs84_.apply({world.y(), world.x(), 0.0});
+    if (!lon_lat) {
+      throw Error("bag writer", "navigation at t = " + std::to_string(s.time_s) + " s",
+                  "PROJ cannot place it in WGS84 (" + to_wgs84_.lastError() +
+                      "): expected a position inside the mission's CRS's area");
+    }
+    const GridProjection::GridPoint p =
+        grid_.place(lon_lat->x(), lon_lat->y(), "bag writer", "navigation");
+    s.q_world_vehicle =
+        Eigen::Quaterniond(Eigen::AngleAxisd(-p.true_north_bearing_rad, Eigen::Vector3d::UnitZ())) *
+        s.q_world_vehicle;
+    NavSatFixMsg fix;
+    fix.latitude_deg = lon_lat->y();
+    fix.longitude_deg = lon_lat->x();
+    fix.altitude_m = -world.z();
+    return fix;
+  }
+
+ private:
+  static const std::string& requireCrs(const Mission& mission) {
+    if (mission.crs.empty()) {
+      throw Error("bag writer", "navigation",
+                  "the mission has no CRS: expected one (geodetic navigation or crs: in its "
+                  "mission.yaml) to write NavSatFix positions");
+    }
+    return mission.crs;
+  }
+
+  Eigen::Vector3d origin_;
+  CrsTransform to_wgs84_;
+  GridProjection grid_;
+};
+
 std::vector<BagMessageSpec> bagMessages(const Mission& mission, const BagWriteOptions& options,
                                         BagWriteReport& report) {
   std::vector<OutMessage> out;
@@ -108,7 +157,17 @@ std::vector<BagMessageSpec> bagMessages(const Mission& mission, const BagWriteOp
     ++report.frames;
   }
   const RosFrameConventions rep103;
-  for (const NavSample& s : mission.nav.samples()) {
+  std::optional<GeoFixWriter> fixes;
+  if (!options.fix_topic.empty()) {
+    fixes.emplace(mission);
+  }
+  for (const NavSample& sample : mission.nav.samples()) {
+    NavSample s = sample;
+    if (fixes) {
+      NavSatFixMsg fix = fixes->fixOf(s);  // turns s's attitude to true north
+      fix.header = {nanoseconds(s.time_s), "gps"};
+      out.push_back({fix.header.stamp_ns, {3, fix.header.stamp_ns, encodeNavSatFix(fix)}});
+    }
     const Eigen::Isometry3d T = rosWorldBody(s.T_world_vehicle(), rep103);
     RosPoseMsg pose;
     pose.header = {nanoseconds(s.time_s), "map"};
@@ -141,6 +200,9 @@ std::vector<BagTopicSpec> topicsOf(const BagWriteOptions& options) {
   std::vector<BagTopicSpec> topics{{options.sonar_topic, kProjectedSonarImageType, ""},
                                    {options.nav_topic, kOdometryType, ""},
                                    {"/tf_static", kTfMessageType, ""}};
+  if (!options.fix_topic.empty()) {
+    topics.push_back({options.fix_topic, kNavSatFixType, ""});
+  }
   for (BagTopicSpec& t : topics) {
     t.definition = rosMessageDefinition(t.type);
   }

@@ -1,5 +1,6 @@
 // Writing a mission as a ROS 2 bag: sonar frames as marine_acoustic_msgs/ProjectedSonarImage,
-// the navigation as nav_msgs/Odometry (world ENU "map", body FLU "base_link", REP-103) and the
+// the navigation as nav_msgs/Odometry (world ENU "map", body FLU "base_link", REP-103; local
+// to the mission origin), optionally its positions as sensor_msgs/NavSatFix too, and the
 // mounting as one tf2_msgs/TFMessage on /tf_static. For tests and for `simulate --format`:
 // a bag of a simulated mission, with its ground truth beside it, read back by our reader
 // (io/rosbag/ros_bag.h) or by ROS tools. MCAP files are written without a summary section (readers
@@ -43,6 +44,11 @@ struct BagWriteOptions {
   double receive_delay_s = 0.0;
   std::string sonar_topic = "/sonar/image";
   std::string nav_topic = "/odometry";
+  /// Not empty: the positions also as sensor_msgs/NavSatFix on this topic (WGS84 latitude and
+  /// longitude of the world position on the mission's grid, by PROJ; altitude = -down), and the
+  /// Odometry's attitude from true north (grid north turned back by the grid convergence), as
+  /// a vehicle's fix and INS give them. Needs a mission with a CRS.
+  std::string fix_topic;
   std::string sonar_frame = "sonar";
   std::size_t chunk_bytes = std::size_t{4} << 20;
 };

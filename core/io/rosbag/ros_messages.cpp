@@ -37,6 +37,17 @@ const std::map<std::string, std::string>& fieldLists() {
        "std_msgs/Header header\nstring child_frame_id\ngeometry_msgs/PoseWithCovariance pose\n"
        "geometry_msgs/TwistWithCovariance twist\n"},
       {"tf2_msgs/TFMessage", "geometry_msgs/TransformStamped[] transforms\n"},
+      {"sensor_msgs/NavSatFix",
+       "std_msgs/Header header\nNavSatStatus status\nfloat64 latitude\nfloat64 longitude\n"
+       "float64 altitude\nfloat64[9] position_covariance\n"
+       "uint8 COVARIANCE_TYPE_UNKNOWN = 0\nuint8 COVARIANCE_TYPE_APPROXIMATED = 1\n"
+       "uint8 COVARIANCE_TYPE_DIAGONAL_KNOWN = 2\nuint8 COVARIANCE_TYPE_KNOWN = 3\n"
+       "uint8 position_covariance_type\n"},
+      {"sensor_msgs/NavSatStatus",
+       "int8 STATUS_NO_FIX = -1\nint8 STATUS_FIX = 0\nint8 STATUS_SBAS_FIX = 1\n"
+       "int8 STATUS_GBAS_FIX = 2\nint8 status\nuint16 SERVICE_GPS = 1\n"
+       "uint16 SERVICE_GLONASS = 2\nuint16 SERVICE_COMPASS = 4\nuint16 SERVICE_GALILEO = 8\n"
+       "uint16 service\n"},
   };
   return fields;
 }
@@ -51,6 +62,8 @@ const std::map<std::string, std::vector<std::string>>& dependencies() {
        {"std_msgs/Header", "builtin_interfaces/Time", "geometry_msgs/PoseWithCovariance",
         "geometry_msgs/Pose", "geometry_msgs/Point", "geometry_msgs/Quaternion",
         "geometry_msgs/TwistWithCovariance", "geometry_msgs/Twist", "geometry_msgs/Vector3"}},
+      {"sensor_msgs/NavSatFix",
+       {"std_msgs/Header", "builtin_interfaces/Time", "sensor_msgs/NavSatStatus"}},
       {"tf2_msgs/TFMessage",
        {"geometry_msgs/TransformStamped", "std_msgs/Header", "builtin_interfaces/Time",
         "geometry_msgs/Transform", "geometry_msgs/Vector3", "geometry_msgs/Quaternion"}},
@@ -158,6 +171,9 @@ RosMessageKind rosMessageKind(std::string_view type) {
   }
   if (t == "tf2_msgs/TFMessage") {
     return RosMessageKind::Transforms;
+  }
+  if (t == "sensor_msgs/NavSatFix") {
+    return RosMessageKind::GeoFix;
   }
   return RosMessageKind::Other;
 }
@@ -279,6 +295,23 @@ RosPoseMsg decodeRosPose(std::string_view type, std::span<const std::uint8_t> cd
   return msg;
 }
 
+NavSatFixMsg decodeNavSatFix(std::span<const std::uint8_t> cdr, const std::string& source,
+                             const std::string& place) {
+  CdrReader in(cdr, source, place);
+  NavSatFixMsg msg;
+  msg.header = readRosHeader(in);
+  msg.status = in.read<std::int8_t>("status.status");
+  msg.service = in.read<std::uint16_t>("status.service");
+  msg.latitude_deg = in.read<double>("latitude");
+  msg.longitude_deg = in.read<double>("longitude");
+  msg.altitude_m = in.read<double>("altitude");
+  for (int i = 0; i < 9; ++i) {
+    in.read<double>("position_covariance");
+  }
+  in.read<std::uint8_t>("position_covariance_type");
+  return msg;
+}
+
 std::vector<RosTransformMsg> decodeTfMessage(std::span<const std::uint8_t> cdr,
                                              const std::string& source, const std::string& place) {
   CdrReader in(cdr, source, place);
@@ -325,6 +358,19 @@ std::vector<std::uint8_t> encodeOdometry(const RosPoseMsg& msg) {
   writeQuaternion(out, msg.orientation);
   writeZeros(out, 36);      // pose covariance
   writeZeros(out, 6 + 36);  // twist and its covariance
+  return out.bytes();
+}
+
+std::vector<std::uint8_t> encodeNavSatFix(const NavSatFixMsg& msg) {
+  CdrWriter out;
+  writeHeader(out, msg.header);
+  out.write(msg.status);
+  out.write(msg.service);
+  out.write(msg.latitude_deg);
+  out.write(msg.longitude_deg);
+  out.write(msg.altitude_m);
+  writeZeros(out, 9);
+  out.write(std::uint8_t{0});
   return out.bytes();
 }
 

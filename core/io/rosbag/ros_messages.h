@@ -4,7 +4,8 @@
 //     acoustic_msgs): sonar images;
 //   nav_msgs/msg/Odometry, geometry_msgs/msg/PoseStamped and PoseWithCovarianceStamped: the
 //     vehicle's pose;
-//   tf2_msgs/msg/TFMessage: transforms (the sonar's mounting, from /tf_static).
+//   tf2_msgs/msg/TFMessage: transforms (the sonar's mounting, from /tf_static);
+//   sensor_msgs/msg/NavSatFix: the vehicle's WGS84 position (io/rosbag/bag_geofix.h).
 // Decoding checks every length against the bytes left and throws Error naming the file, the
 // message and the CDR byte. Encoding (for the bag writer) writes little-endian CDR.
 #pragma once
@@ -19,7 +20,7 @@
 namespace sonarcarve {
 
 /// What a message type is to SonarCarve.
-enum class RosMessageKind { Other, SonarImage, VehiclePose, Transforms };
+enum class RosMessageKind { Other, SonarImage, VehiclePose, Transforms, GeoFix };
 
 /// True for the older acoustic_msgs/msg/SonarImage (azimuths instead of beam directions).
 bool isLegacySonarImage(std::string_view type);
@@ -34,6 +35,7 @@ inline constexpr const char* kProjectedSonarImageType =
     "marine_acoustic_msgs/msg/ProjectedSonarImage";
 inline constexpr const char* kOdometryType = "nav_msgs/msg/Odometry";
 inline constexpr const char* kTfMessageType = "tf2_msgs/msg/TFMessage";
+inline constexpr const char* kNavSatFixType = "sensor_msgs/msg/NavSatFix";
 
 struct RosHeader {
   std::int64_t stamp_ns = 0;  ///< builtin_interfaces/Time as nanoseconds
@@ -85,6 +87,20 @@ struct RosTransformMsg {
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
 };
 
+/// sensor_msgs/msg/NavSatFix: header, NavSatStatus (int8 status, uint16 service), latitude,
+/// longitude (degrees, WGS84), altitude (metres, positive up), float64[9] position_covariance,
+/// uint8 position_covariance_type. Values are as sent: NaN and out-of-range ones are the
+/// caller's to refuse.
+struct NavSatFixMsg {
+  RosHeader header;
+  std::int8_t status = 0;     ///< NavSatStatus: -1 no fix, 0 fix, 1 SBAS, 2 GBAS
+  std::uint16_t service = 1;  ///< NavSatStatus: 1 GPS, 2 GLONASS, 4 COMPASS, 8 GALILEO
+  double latitude_deg = 0.0;
+  double longitude_deg = 0.0;
+  double altitude_m = 0.0;
+};
+inline constexpr std::int8_t kNavSatStatusNoFix = -1;
+
 class CdrReader;
 /// A std_msgs/Header at the reader's place (stamp checked: nanoseconds below 10^9).
 RosHeader readRosHeader(CdrReader& in);
@@ -108,12 +124,16 @@ ProjectedSonarImageMsg decodeSonarImage(std::string_view type, std::span<const s
 /// Odometry, PoseStamped or PoseWithCovarianceStamped, by `type`.
 RosPoseMsg decodeRosPose(std::string_view type, std::span<const std::uint8_t> cdr,
                          const std::string& source, const std::string& place);
+NavSatFixMsg decodeNavSatFix(std::span<const std::uint8_t> cdr, const std::string& source,
+                             const std::string& place);
 std::vector<RosTransformMsg> decodeTfMessage(std::span<const std::uint8_t> cdr,
                                              const std::string& source, const std::string& place);
 
 std::vector<std::uint8_t> encodeProjectedSonarImage(const ProjectedSonarImageMsg& msg);
 /// An Odometry message (zero twist and covariances).
 std::vector<std::uint8_t> encodeOdometry(const RosPoseMsg& msg);
+/// A NavSatFix (covariance unknown: zeros, type 0).
+std::vector<std::uint8_t> encodeNavSatFix(const NavSatFixMsg& msg);
 std::vector<std::uint8_t> encodeTfMessage(const std::vector<RosTransformMsg>& transforms);
 
 /// The message definition text of a type as ROS 2 writes it into MCAP schemas ("ros2msg":

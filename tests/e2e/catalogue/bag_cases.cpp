@@ -2,11 +2,13 @@
 // SQLite3), then cut short, emptied, reduced to its magic, or asked for a topic it does not
 // hold. A bag cut inside a record keeps every record before it and says where reading
 // stopped; nothing is written when no frame can be read.
+#include <limits>
 #include <utility>
 
 #include "e2e/catalogue/catalogue.h"
 #include "io/mission/mission.h"
 #include "io/rosbag/bag_writer.h"
+#include "io/rosbag/ros_bag.h"
 
 namespace sonarcarve::test {
 namespace {
@@ -39,10 +41,72 @@ std::string unchanged(std::string bytes) {
   return bytes;
 }
 
+// The example mission on a transverse Mercator grid centred on 43 N, 3 E (crs: in its
+// mission.yaml) as bag.mcap with its positions as sensor_msgs/NavSatFix on /fix, fix k changed
+// by `change` (issue 43). The bag's reader places the fixes on their UTM zone, 31N.
+using FixChange = std::function<void(NavSatFixMsg&, std::size_t)>;
+void writeFixBag(const Workspace& ws, const FixChange& change) {
+  writeBytes(ws.mission() / "mission.yaml",
+             readText(ws.mission() / "mission.yaml") +
+                 "crs: +proj=tmerc +lat_0=43 +lon_0=3 +k=1 +x_0=0 +y_0=0 +datum=WGS84 "
+                 "+units=m +type=crs\n");
+  BagWriteOptions options;
+  options.fix_topic = "/fix";
+  writeRosBag(readMission(ws.mission()), ws / "plain.mcap", options);
+  const std::unique_ptr<RosBag> bag = openRosBag(ws / "plain.mcap");
+  std::vector<BagTopicSpec> topics;
+  for (const BagTopic& t : bag->topics()) {
+    topics.push_back({t.name, t.type, rosMessageDefinition(t.type)});
+  }
+  std::vector<BagMessageSpec> messages;
+  std::size_t k = 0;
+  for (const BagMessage& m : bag->messages()) {
+    std::vector<std::uint8_t> data = bag->payload(m);
+    if (rosMessageKind(bag->topics()[m.topic].type) == RosMessageKind::GeoFix) {
+      NavSatFixMsg fix = decodeNavSatFix(data, "plain.mcap", m.place);
+      change(fix, k++);
+      data = encodeNavSatFix(fix);
+    }
+    messages.push_back({m.topic, m.receive_ns, std::move(data)});
+  }
+  writeBagMessages(ws / "bag.mcap", BagFormat::Mcap, topics, std::move(messages));
+}
+
+CatalogueCase fixCase(const std::string& name, FixChange change, const std::string& args,
+                      Outcome outcome, std::vector<std::string> message,
+                      std::vector<std::string> absent = {}) {
+  return {.name = name,
+          .prepare =
+              [=](const Workspace& ws) {
+                writeFixBag(ws, change);
+                return args;
+              },
+          .outcome = outcome,
+          .message = std::move(message),
+          .absent = std::move(absent)};
+}
+
 }  // namespace
 
 std::vector<CatalogueCase> bagCases() {
   return {
+      // NavSatFix positions (issue 43): read with their CRS; fixes without a fix or with NaN
+      // are left out and counted; none left is an error saying why.
+      fixCase("NavSatFixGivesTheGrid", [](NavSatFixMsg&, std::size_t) {}, "info bag.mcap",
+              Outcome::Succeeds, {"position topic /fix (sensor_msgs/NavSatFix)", "EPSG:32631"}),
+      fixCase("NavSatFixWithNaN",
+              [](NavSatFixMsg& f, std::size_t k) {
+                if (k % 3 == 1)
+                  f.latitude_deg = std::numeric_limits<double>::quiet_NaN();
+              },
+              "info bag.mcap", Outcome::Succeeds,
+              {"topic /fix: fixes left out:", "with a latitude, longitude or altitude not finite"}),
+      fixCase("NavSatFixAllWithoutAFix",
+              [](NavSatFixMsg& f, std::size_t) { f.status = kNavSatStatusNoFix; },
+              "reconstruct bag.mcap --out out", Outcome::Fails,
+              {"bag.mcap: topic /fix: no usable sensor_msgs/NavSatFix of",
+               "with status STATUS_NO_FIX", "expected fixes with finite latitude"},
+              {"out"}),
       bagCase("McapReadsAndReconstructs", BagFormat::Mcap, "bag.mcap", unchanged,
               "reconstruct bag.mcap --mesh false --out out", Outcome::Succeeds, {"denoising:"}),
       bagCase("McapInfoListsTheTopics", BagFormat::Mcap, "bag.mcap", unchanged, "info bag.mcap",

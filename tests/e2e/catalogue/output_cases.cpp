@@ -262,6 +262,38 @@ std::vector<CatalogueCase> outputCases() {
       exportFullDisk("ExportPlyOnAFullDisk", "mesh.ply"),
       exportFullDisk("ExportAsciiPlyOnAFullDisk", "mesh_ascii.ply", " --format ply-ascii"),
       exportFullDisk("ExportPointsOnAFullDisk", "points.ply", " --points"),
+      exportFullDisk("ExportLasOnAFullDisk", "points.las"),
+      // LAS (issue 43) to a target that cannot be written: a folder where files cannot be
+      // created, a folder in the file's place; nothing is left behind.
+      {.name = "ExportLasIntoAFolderThatCannotBeWritten",
+       .prepare =
+           [](const Workspace& ws) {
+             return "export " + writeReconstruction(ws) + " --format las --out /sys/points.las";
+           },
+       .message = {"/sys/points.las: cannot create a file in /sys"}},
+      {.name = "ExportGeoTiffIntoAFolderThatCannotBeWritten",
+       .prepare =
+           [](const Workspace& ws) {
+             return "export " + writeReconstruction(ws) + " --out /sys/seabed.tif";
+           },
+       .message = {"/sys/seabed.tif: cannot create a file in /sys"}},
+      {.name = "ExportGeoTiffWithCellsTooSmall",
+       .prepare =
+           [](const Workspace& ws) {
+             writePrevious(ws / "seabed.tif");
+             return "export " + writeReconstruction(ws) + " --cell 0.00001 --out seabed.tif";
+           },
+       .message = {"export: cell", "cells over the points: expected a larger cell"},
+       .intact = {"seabed.tif"}},
+      {.name = "ExportLasOntoAFolder",
+       .prepare =
+           [](const Workspace& ws) {
+             std::filesystem::create_directories(ws / "points.las");
+             writePrevious(ws / "points.las/inside");
+             return "export " + writeReconstruction(ws) + " --out points.las";
+           },
+       .message = {"points.las: is a directory: expected a regular file or a new path"},
+       .intact = {"points.las/inside"}},
       {.name = "NoiseModelOnAFullDisk",
        .prepare =
            [](const Workspace& ws) {
