@@ -88,8 +88,8 @@ TEST(PipelineLoop, StandardStagesRunInOrder) {
   ThreadPool pool(2);
   Pipeline pipeline(mission, quick(), pool);
   EXPECT_EQ(pipeline.stageNames(),
-            (std::vector<std::string>{"read", "denoise", "beam check", "choose", "carve", "surface",
-                                      "mesh"}));
+            (std::vector<std::string>{"read", "denoise", "beam check", "choose", "carve",
+                                      "heading sectors", "surface", "mesh"}));
   std::filesystem::path out = "/nonexistent";
   pipeline.writeOutputsTo({out, {}, false, {}, {}});
   EXPECT_EQ(pipeline.stageNames().back(), "export");

@@ -4,7 +4,7 @@ namespace sonarcarve {
 
 std::vector<std::shared_ptr<const Stage>> standardStages() {
   return {makeReadStage(),  makeDenoiseStage(), makeBeamCheckStage(), makeChooseStage(),
-          makeCarveStage(), makeSectorStage(), makeSurfaceStage(), makeMeshStage()};
+          makeCarveStage(), makeSectorStage(),  makeSurfaceStage(),   makeMeshStage()};
 }
 
 }  // namespace sonarcarve
