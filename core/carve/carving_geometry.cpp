@@ -61,10 +61,7 @@ CarvingGeometry::CarvingGeometry(const SonarModel& sonar, const CarveParams& par
   const bool main_lobe = carvesMainLobe(sonar, params);
   carved_half_elevation_ = 0.5 * sonar.verticalAperture();
   if (main_lobe) {
-    const double reach = sonar.elevationReach();
-    carved_half_elevation_ = reach > 0.0
-                                 ? std::clamp(reach, carved_half_elevation_, elevation_beam.null(1))
-                                 : elevation_beam.null(1);
+    carved_half_elevation_ = sonar.mainLobeReach();
   }
   if (carved_half_elevation_ >= 0.5 * std::numbers::pi) {
     throw Error("carving", "vertical aperture",

@@ -316,20 +316,30 @@ Eigen::Vector3i VoxelMap::voxelOf(const Eigen::Vector3d& p_world) const {
   return (p_world / voxel_size_m_).array().floor().cast<int>();
 }
 
+bool VoxelMap::locate(const Eigen::Vector3i& voxel, std::size_t& block, int& in) const {
+  Eigen::Vector3i rel;
+  in = 0;
+  for (int a = 2; a >= 0; --a) {
+    const int b = floorDiv(voxel[a], kBlockSide);
+    rel[a] = b - first_block_[a];
+    in = in * kBlockSide + (voxel[a] - b * kBlockSide);
+    if (rel[a] < 0 || rel[a] >= dims_[a]) {
+      return false;
+    }
+  }
+  block = blockIndex(rel);
+  return true;
+}
+
 void VoxelMap::setVoxels(const std::vector<std::pair<Eigen::Vector3i, float>>& voxels) {
   std::map<std::size_t, std::vector<std::pair<int, float>>> by_block;
   for (const auto& [voxel, v] : voxels) {
-    Eigen::Vector3i rel;
+    std::size_t block = 0;
     int in = 0;
-    for (int a = 2; a >= 0; --a) {
-      const int b = floorDiv(voxel[a], kBlockSide);
-      rel[a] = b - first_block_[a];
-      in = in * kBlockSide + (voxel[a] - b * kBlockSide);
-      if (rel[a] < 0 || rel[a] >= dims_[a]) {
-        throw Error("voxel map", "", "a voxel to set lies outside the map's box");
-      }
+    if (!locate(voxel, block, in)) {
+      throw Error("voxel map", "", "a voxel to set lies outside the map's box");
     }
-    by_block[blockIndex(rel)].emplace_back(in, v);
+    by_block[block].emplace_back(in, v);
   }
   std::array<float, kBlockVoxels> values{};
   for (const auto& [block, changes] : by_block) {
@@ -342,30 +352,22 @@ void VoxelMap::setVoxels(const std::vector<std::pair<Eigen::Vector3i, float>>& v
 }
 
 float VoxelMap::value(const Eigen::Vector3i& voxel) const {
-  Eigen::Vector3i rel;
-  Eigen::Vector3i in;
-  for (int a = 0; a < 3; ++a) {
-    const int b = floorDiv(voxel[a], kBlockSide);
-    rel[a] = b - first_block_[a];
-    in[a] = voxel[a] - b * kBlockSide;
-    if (rel[a] < 0 || rel[a] >= dims_[a]) {
-      return kUnknown;
-    }
+  std::size_t block = 0;
+  int i = 0;
+  if (!locate(voxel, block, i)) {
+    return kUnknown;
   }
-  const std::size_t block = blockIndex(rel);
   switch (state(block)) {
     case BlockState::Unknown:
       return kUnknown;
     case BlockState::Free:
       return 0.0f;
-    case BlockState::Partial: {
-      const int i = (in.z() * kBlockSide + in.y()) * kBlockSide + in.x();
+    case BlockState::Partial:
       return (slotMask(slotOf(block))[i / 64] >> (i % 64)) & 1u ? 0.0f : kUnknown;
-    }
     case BlockState::Mixed:
       break;
   }
-  return values(block)[(in.z() * kBlockSide + in.y()) * kBlockSide + in.x()];
+  return values(block)[i];
 }
 
 void VoxelMap::storeMask(std::size_t block, const std::array<std::uint64_t, kMaskWords>& mask) {

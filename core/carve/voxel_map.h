@@ -210,6 +210,9 @@ class VoxelMap {
   BlockState& stateOf(std::size_t block) const {
     return pages_[pageOf(block)]->state[block % kPageBlocks];
   }
+  /// The block holding global voxel `voxel` and the voxel's place in it (x fastest); false
+  /// outside the box.
+  bool locate(const Eigen::Vector3i& voxel, std::size_t& block, int& in) const;
   std::vector<std::int32_t> slot_block_;  // the block a value slot holds, or -1
   // Block contents live in chunks of kChunkBlocks blocks whose addresses never change, so
   // threads may carve Mixed blocks in place while others allocate new ones.

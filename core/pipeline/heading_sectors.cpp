@@ -7,10 +7,8 @@
 #include "common/angles.h"
 
 namespace sonarcarve {
-namespace {
 
-// The compass heading of a frame's look direction, degrees in [0, 360); none near vertical.
-std::optional<double> headingOf(const PosedFrame& frame) {
+std::optional<double> lookHeadingDeg(const PosedFrame& frame) {
   const Eigen::Vector3d axis = frame.T_world_sonar.linear().col(0);
   if (std::hypot(axis.x(), axis.y()) < std::sin(degToRad(10.0))) {
     return std::nullopt;
@@ -19,13 +17,11 @@ std::optional<double> headingOf(const PosedFrame& frame) {
   return heading < 0.0 ? heading + 360.0 : heading;
 }
 
-}  // namespace
-
 std::vector<std::vector<PosedFrame>> headingSectors(const std::vector<PosedFrame>& frames,
                                                     double width_deg, std::size_t min_frames) {
   std::vector<std::pair<double, std::size_t>> headings;
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    if (const std::optional<double> heading = headingOf(frames[i])) {
+    if (const std::optional<double> heading = lookHeadingDeg(frames[i])) {
       headings.emplace_back(*heading, i);
     }
   }
@@ -73,13 +69,17 @@ std::vector<std::vector<PosedFrame>> headingSectors(const std::vector<PosedFrame
   return sectors;
 }
 
-bool carvesBySector(const std::vector<PosedFrame>& frames, double max_range_m) {
+std::vector<std::vector<PosedFrame>> sectorsToCarve(const std::vector<PosedFrame>& frames,
+                                                    double max_range_m) {
   Eigen::AlignedBox2d track;
   for (const PosedFrame& frame : frames) {
     track.extend(frame.T_world_sonar.translation().head<2>());
   }
-  return !frames.empty() && track.diagonal().norm() <= kSectorTrackRanges * max_range_m &&
-         headingSectors(frames).size() >= 2;
+  if (frames.empty() || track.diagonal().norm() > kSectorTrackRanges * max_range_m) {
+    return {};
+  }
+  std::vector<std::vector<PosedFrame>> sectors = headingSectors(frames);
+  return sectors.size() >= 2 ? sectors : std::vector<std::vector<PosedFrame>>{};
 }
 
 }  // namespace sonarcarve

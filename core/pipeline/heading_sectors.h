@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "pipeline/frame_stage.h"
@@ -22,6 +23,10 @@ inline constexpr double kSectorTrackRanges = 1.5;
 /// A sector needs this many frames to be carved as a pass of its own (fewer leave ghosts).
 inline constexpr std::size_t kSectorMinFrames = 24;
 
+/// The compass heading of a frame's look direction (the sonar's axis on the horizontal plane),
+/// degrees in [0, 360); none for a frame looking within 10 degrees of straight up or down.
+std::optional<double> lookHeadingDeg(const PosedFrame& frame);
+
 /// The frames grouped by heading (the sonar's axis on the horizontal plane): sectors of at
 /// most `width_deg`, the first starting after the widest gap between headings, each next one
 /// at the first heading past the one before. Frames looking within 10 degrees of straight up or
@@ -31,10 +36,11 @@ std::vector<std::vector<PosedFrame>> headingSectors(const std::vector<PosedFrame
                                                     double width_deg = kSectorWidth_deg,
                                                     std::size_t min_frames = kSectorMinFrames);
 
-/// Whether a run carves each heading sector alone: at least two sectors, over a track whose
+/// The sectors a run carves alone (none when it does not): at least two, over a track whose
 /// horizontal extent (its box's diagonal) stays within kSectorTrackRanges times the sonar's
 /// range `max_range_m`: an inspection around a structure. A survey's lines, whose map is let go
 /// as the track leaves it, are left as they are (not measured with sectors).
-bool carvesBySector(const std::vector<PosedFrame>& frames, double max_range_m);
+std::vector<std::vector<PosedFrame>> sectorsToCarve(const std::vector<PosedFrame>& frames,
+                                                    double max_range_m);
 
 }  // namespace sonarcarve

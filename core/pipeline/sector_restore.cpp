@@ -5,9 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <unordered_map>
-
 #include <unordered_set>
-#include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
 namespace {
@@ -89,8 +87,7 @@ bool hiddenFrom(const VoxelMap& grid, const Eigen::Vector3i& from, const Eigen::
 
 std::vector<bool> elevationSwept(const SurfacePoints& points, const std::vector<PosedFrame>& frames,
                                  const SonarModel& sonar, double min_span_rad) {
-  const double null = SincSquaredBeam(sonar.verticalAperture()).null(1);
-  const double reach = sonar.elevationReach() > 0.0 ? std::min(sonar.elevationReach(), null) : null;
+  const double reach = sonar.mainLobeReach();
   std::vector<double> lowest(points.size(), std::numeric_limits<double>::infinity());
   std::vector<double> highest(points.size(), -std::numeric_limits<double>::infinity());
   for (const PosedFrame& frame : frames) {

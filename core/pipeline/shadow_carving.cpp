@@ -4,17 +4,15 @@
 #include <cmath>
 #include <sstream>
 
-#include "common/angles.h"
+#include "pipeline/heading_sectors.h"
 
 namespace sonarcarve {
 
 double headingSpreadDeg(const std::vector<PosedFrame>& frames) {
-  const double min_horizontal = std::sin(degToRad(10.0));
   std::vector<double> headings;
   for (const PosedFrame& f : frames) {
-    const Eigen::Vector3d axis = f.T_world_sonar.linear().col(0);
-    if (std::hypot(axis.x(), axis.y()) >= min_horizontal) {
-      headings.push_back(radToDeg(std::atan2(axis.y(), axis.x())));
+    if (const std::optional<double> heading = lookHeadingDeg(f)) {
+      headings.push_back(*heading);
     }
   }
   if (headings.size() < 2) {

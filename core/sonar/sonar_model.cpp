@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "common/input_limits.h"
+#include "sonar/beam_pattern.h"
 
 namespace sonarcarve {
 
@@ -91,6 +92,13 @@ std::optional<Pixel> SonarModel::pixelOf(const Polar& polar) const {
 
 std::optional<Pixel> SonarModel::pixelOf(const Eigen::Vector3d& p_sonar) const {
   return pixelOf(polarFromPoint(p_sonar));
+}
+
+double SonarModel::mainLobeReach() const {
+  const double null = SincSquaredBeam(verticalAperture()).null(1);
+  return elevation_reach_rad_ > 0.0
+             ? std::clamp(elevation_reach_rad_, 0.5 * verticalAperture(), null)
+             : null;
 }
 
 }  // namespace sonarcarve

@@ -73,6 +73,9 @@ class SonarModel {
   /// default): the first null. Set by the beam check where the frames show the tails end
   /// short of it (pipeline/beam_check.h).
   double elevationReach() const { return elevation_reach_rad_; }
+  /// How far off the axis beam-aware carving trusts a dark pixel, radians: the reach, within
+  /// [aperture/2, the declared sinc^2 beam's first null]; the first null where no reach is set.
+  double mainLobeReach() const;
   SonarModel withElevationReach(double reach_rad) const {
     SonarModel other = *this;
     other.elevation_reach_rad_ = reach_rad;

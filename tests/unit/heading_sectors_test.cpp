@@ -54,7 +54,7 @@ TEST(HeadingSectors, AnOrbitSplitsIntoSixtyDegreeSectorsInTheMissionsOrder) {
     }
   }
   EXPECT_EQ(frames, 288u);
-  EXPECT_TRUE(carvesBySector(orbit(288, 5.0), kRange));
+  EXPECT_EQ(sectorsToCarve(orbit(288, 5.0), kRange).size(), 6u);
 }
 
 TEST(HeadingSectors, DescentsFromFourSidesAreFourSectorsAndOnePassIsOne) {
@@ -67,7 +67,7 @@ TEST(HeadingSectors, DescentsFromFourSidesAreFourSectorsAndOnePassIsOne) {
   EXPECT_EQ(headingSectors(descents).size(), 4u);
   const std::vector<PosedFrame> one_pass(descents.begin(), descents.begin() + 30);
   EXPECT_EQ(headingSectors(one_pass).size(), 1u);
-  EXPECT_FALSE(carvesBySector(one_pass, kRange));
+  EXPECT_TRUE(sectorsToCarve(one_pass, kRange).empty());
 }
 
 TEST(HeadingSectors, FramesLookingDownAndSmallSectorsAreLeftOut) {
@@ -96,7 +96,7 @@ TEST(HeadingSectors, ASurveysLinesAreNotCarvedBySector) {
     }
   }
   EXPECT_EQ(headingSectors(lines).size(), 2u);
-  EXPECT_FALSE(carvesBySector(lines, kRange));
+  EXPECT_TRUE(sectorsToCarve(lines, kRange).empty());
 }
 
 TEST(ElevationSwept, ADescentSweepsItsBeamOverAPointAndALevelArcDoesNot) {

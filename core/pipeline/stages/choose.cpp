@@ -23,7 +23,7 @@ class ChooseStage : public Stage {
       run.choose(shadow.choice);
       // Heading sectors (stage "heading sectors") set voxels back into the whole map.
       if (run.evicting && run.params.heading_sectors &&
-          carvesBySector(run.posed, run.sonar.range().maxRange())) {
+          !sectorsToCarve(run.posed, run.sonar.range().maxRange()).empty()) {
         run.evicting = false;
       }
     }

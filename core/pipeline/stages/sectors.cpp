@@ -47,10 +47,11 @@ class SectorStage : public Stage {
       return;
     }
     VoxelMap* mission_map = run.result.carver->evictableMap();
-    if (mission_map == nullptr || !carvesBySector(run.carved.used, run.sonar.range().maxRange())) {
+    const std::vector<std::vector<PosedFrame>> sectors =
+        sectorsToCarve(run.carved.used, run.sonar.range().maxRange());
+    if (mission_map == nullptr || sectors.empty()) {
       return;
     }
-    const std::vector<std::vector<PosedFrame>> sectors = headingSectors(run.carved.used);
     CarveStageParams params = run.carving;
     params.occlusion_aware = false;
     params.refinement.enabled = false;
