@@ -13,7 +13,9 @@
 #include "geometry/scene_io.h"
 #include "io/files/output_folder.h"
 #include "io/mission/mission.h"
+#include "io/mission/staged_mission.h"
 #include "io/rosbag/bag_writer.h"
+#include "io/run/staged_outputs.h"
 #include "sim/demo_scenes.h"
 #include "sim/simulation_run.h"
 
@@ -105,6 +107,28 @@ SonarModel simulatedSonar(const SimulateOptions& o) {
              : paperSonar();
 }
 
+// What a simulation may write into its folder: the files of an earlier one that a new run
+// does not rewrite are removed, so that the folder holds one mission.
+const std::vector<std::string>& simulatedMissionFiles() {
+  static const std::vector<std::string> files = {kMissionFileName,   "frames",
+                                                 "frames.csv",       "nav.csv",
+                                                 "ground_truth.ply", "visible_points.ply",
+                                                 "simulation.yaml",  "ground_truth_poses.csv",
+                                                 "mission.mcap",     "mission.db3"};
+  return files;
+}
+
+std::string bagFileName(const std::string& format) {
+  return format == "db3" ? "mission.db3" : "mission.mcap";
+}
+
+// The mission in `folder` as a ROS 2 bag beside its files (ground truth and all).
+BagWriteReport writeMissionBag(const std::string& format, const std::filesystem::path& folder) {
+  BagWriteOptions bag;
+  bag.format = enumFromString<BagFormat>(format).value_or(BagFormat::Mcap);
+  return writeRosBag(readMission(folder), folder / bagFileName(format), bag);
+}
+
 int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
   const std::filesystem::path out(o.out);
   requireOutputFolder(out);
@@ -156,36 +180,45 @@ int runSimulate(const SimulateOptions& o, ThreadPool& pool) {
       o.max_frames >= 0 ? std::optional<int>(o.max_frames) : std::nullopt,
       out,
       declaredBeam(o.declared_beam)};
+  const bool earlier_mission = std::filesystem::exists(out / kMissionFileName);
   // A simulation cut short is no mission: a folder made for it goes with it.
   return runIntoOutputFolder(out, PartialOutput::Removed, [&] {
     // Two runs into one folder would mix their frames, navigation and ground truth.
     const OutputFolderLock lock(out);
-
+    // So would a run that fails part-way over an earlier mission (--force): the mission is
+    // written apart and moved in once complete.
+    const StagedOutputs staged(out);
+    SimulationRequest staged_request = request;
+    staged_request.output = staged.staging();
     TerminalProgress progress;
-    const SimulationResult result = runSimulation(
-        request, progress, pool,
-        field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt, relief);
-    progress.finish();
-    std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
-              << result.frames_written << " frames of '" << (field ? o.scene : request.scene.name)
-              << "' (" << request.trajectory.kind << ") to " << out.string() << "; "
-              << result.visible_points << " visible surface points; at most "
-              << result.most_triangles_traced << " scene triangles traced at once, "
-              << result.ground_truth_triangles << " in the ground truth\n";
-    if (result.cancelled) {
-      return 130;
+    try {
+      const SimulationResult result = runSimulation(
+          staged_request, progress, pool,
+          field ? std::optional<SeabedFieldSpec>(fieldWithSeed(o.field_seed)) : std::nullopt,
+          relief);
+      progress.finish();
+      const bool bag = o.format != "folder" && !result.cancelled;
+      const BagWriteReport bag_written =
+          bag ? writeMissionBag(o.format, staged.staging()) : BagWriteReport{};
+      for (const std::filesystem::path& removed : publishStagedMission(
+               staged, earlier_mission ? simulatedMissionFiles() : std::vector<std::string>{})) {
+        std::cerr << "removed " << removed.string() << " of an earlier run\n";
+      }
+      std::cout << (result.cancelled ? "cancelled: wrote the first " : "wrote ")
+                << result.frames_written << " frames of '" << (field ? o.scene : request.scene.name)
+                << "' (" << request.trajectory.kind << ") to " << out.string() << "; "
+                << result.visible_points << " visible surface points; at most "
+                << result.most_triangles_traced << " scene triangles traced at once, "
+                << result.ground_truth_triangles << " in the ground truth\n";
+      if (bag) {
+        std::cout << "wrote " << bag_written.frames << " frames and " << bag_written.poses
+                  << " poses as a ROS 2 bag (" << o.format << ") to "
+                  << (out / bagFileName(o.format)).string() << "\n";
+      }
+      return result.cancelled ? 130 : 0;
+    } catch (const Error& e) {
+      throw staged.nothingChanged(e);
     }
-    if (o.format != "folder") {
-      // The same mission as a ROS 2 bag beside the folder's files (ground truth and all).
-      BagWriteOptions bag;
-      bag.format = enumFromString<BagFormat>(o.format).value_or(BagFormat::Mcap);
-      const std::filesystem::path file =
-          out / (bag.format == BagFormat::Db3 ? "mission.db3" : "mission.mcap");
-      const BagWriteReport written = writeRosBag(readMission(out), file, bag);
-      std::cout << "wrote " << written.frames << " frames and " << written.poses
-                << " poses as a ROS 2 bag (" << o.format << ") to " << file.string() << "\n";
-    }
-    return 0;
   });
 }
 

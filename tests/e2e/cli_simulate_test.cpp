@@ -479,10 +479,12 @@ TEST(CliSimulate, CtrlCStopsCleanlyWithAValidShorterMission) {
   test::writeText(script, std::string("'") + SONARCARVE_CLI + "' simulate --scene riser --out " +
                               test::quoted(out) +
                               " > /dev/null 2>&1 &\npid=$!\n"
-                              // Interrupt once the third frame is on disk (at most 20 s).
-                              "for i in $(seq 400); do [ -f " +
-                              test::quoted(out / "frames" / "000002.png") +
-                              " ] && break; sleep 0.05; done\nkill -INT $pid\nwait $pid\n");
+                              // Interrupt once the third frame is on disk (at most 20 s),
+                              // in the folder the mission is written in first.
+                              "for i in $(seq 400); do ls " +
+                              test::quoted(out) +
+                              "/.run.tmp-*/frames/000002.png > /dev/null 2>&1 && break; sleep "
+                              "0.05; done\nkill -INT $pid\nwait $pid\n");
   const int status = std::system(("bash " + test::quoted(script)).c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130);

@@ -41,6 +41,15 @@ void removeStagingLeftByKilledRuns(const std::filesystem::path& folder) {
   }
 }
 
+// Renames `from` to `to`, or throws Error naming `output` and the cause.
+void move(const std::filesystem::path& from, const std::filesystem::path& to,
+          const std::filesystem::path& output) {
+  if (::rename(from.c_str(), to.c_str()) != 0) {
+    throw Error(output.string(), "",
+                std::string("cannot move the run's files into place: ") + std::strerror(errno));
+  }
+}
+
 }  // namespace
 
 StagedOutputs::StagedOutputs(std::filesystem::path folder)
@@ -77,6 +86,30 @@ void StagedOutputs::publish(const std::string& name) const {
   writeFileAtomically(output, readInputFile(staged, "a staged output", kMaxMapFileBytes));
 }
 
+void StagedOutputs::publishFolder(const std::string& name) const {
+  const std::filesystem::path output = folder_ / name;
+  const std::filesystem::path earlier = staging_ / (".earlier-" + name);
+  std::error_code ec;
+  const std::filesystem::file_type kind = std::filesystem::symlink_status(output, ec).type();
+  const bool replaces = kind == std::filesystem::file_type::directory;
+  if (!replaces && kind != std::filesystem::file_type::not_found) {
+    throw Error(output.string(), "",
+                "is not a folder: expected a folder or a new path, to move the run's " + name +
+                    " folder in");
+  }
+  if (replaces) {
+    move(output, earlier, output);
+  }
+  try {
+    move(staging_ / name, output, output);
+  } catch (const Error&) {
+    if (replaces) {
+      ::rename(earlier.c_str(), output.c_str());  // the earlier folder back in place
+    }
+    throw;
+  }
+}
+
 void StagedOutputs::sync() const {
   const int fd = ::open(folder_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd >= 0) {
@@ -91,6 +124,13 @@ std::string StagedOutputs::outputName(const std::string& path) const {
     return path;
   }
   return (folder_ / path.substr(staging.size() + (path.size() > staging.size() ? 1 : 0))).string();
+}
+
+Error StagedOutputs::nothingChanged(const Error& e) const {
+  return Error(outputName(e.source()), e.place(),
+               e.message() + "; nothing was changed in " + folder_.string() +
+                   " (the run's files are written apart first and moved in when all are "
+                   "complete)");
 }
 
 }  // namespace sonarcarve

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <string>
 
+#include "common/error.h"
+
 namespace sonarcarve {
 
 class StagedOutputs {
@@ -23,6 +25,7 @@ class StagedOutputs {
   StagedOutputs(const StagedOutputs&) = delete;
   StagedOutputs& operator=(const StagedOutputs&) = delete;
 
+  const std::filesystem::path& folder() const { return folder_; }
   const std::filesystem::path& staging() const { return staging_; }
 
   /// Moves `name` from the staging folder into the output folder, onto
@@ -30,11 +33,20 @@ class StagedOutputs {
   /// or a device refused). Throws Error naming the output file and the cause.
   void publish(const std::string& name) const;
 
+  /// Moves the staged folder `name` into the output folder. A folder of that name there (an
+  /// earlier run's) is first moved into the staging folder and goes with it; anything else in
+  /// the way (a file, a link) is refused. Throws Error naming the output folder's `name`.
+  void publishFolder(const std::string& name) const;
+
   /// Syncs the output folder, so that the renames survive a power cut.
   void sync() const;
 
   /// `path` with the staging folder replaced by the output folder: what a message should name.
   std::string outputName(const std::string& path) const;
+
+  /// `e`, raised while the run wrote into the staging folder, as a message on the output
+  /// folder: the file named there (outputName), and saying that nothing was changed in it.
+  Error nothingChanged(const Error& e) const;
 
  private:
   std::filesystem::path folder_;

@@ -100,10 +100,7 @@ class ExportStage : public Stage {
     try {
       writeOutputs(run, settings_, staged.staging(), written);
     } catch (const Error& e) {
-      throw Error(staged.outputName(e.source()), e.place(),
-                  e.message() + "; nothing was changed in " + settings_.folder.string() +
-                      " (the run's files are written apart first and moved in when all are "
-                      "complete)");
+      throw staged.nothingChanged(e);
     }
     RunManifest manifest(settings_.folder, settings_.arguments, runOutputFiles());
     try {

@@ -41,7 +41,8 @@ struct CatalogueCase {
   std::vector<std::string> absent = {};
   /// Files prepare() wrote with writePrevious() that must still hold that content.
   std::vector<std::string> intact = {};
-  /// Largest file the command may write, KiB (a full disk); 0 = no limit.
+  /// Largest file the command may write (a full disk), in the units of sh's `ulimit -f`: blocks
+  /// of 512 bytes for dash, the /bin/sh that runs the cases; 0 = no limit.
   int file_size_limit_kib = 0;
   /// A command run around sonarcarve-cli, in the workspace: "flock -o out" (holds out/ locked).
   std::string wrapper = "";

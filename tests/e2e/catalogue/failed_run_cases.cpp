@@ -49,6 +49,33 @@ CatalogueCase removesNewFolder(const std::string& name, const std::string& comma
           .file_size_limit_kib = file_limit_kib};
 }
 
+// An earlier simulated mission in sim/ (the riser), some of its files marked as an earlier
+// run's, then `simulate --force` of another scene into it: it fails part-way (a full disk)
+// and must leave the earlier mission as it was, nothing of the new one mixed in.
+const std::vector<std::string> kEarlierMission = {"sim/nav.csv", "sim/frames.csv",
+                                                  "sim/ground_truth.ply", "sim/frames/000001.png"};
+
+CatalogueCase keepsEarlierMission(const std::string& name, const std::string& flags,
+                                  const std::vector<std::string>& message, int file_limit_kib) {
+  std::vector<std::string> said = message;
+  said.push_back("nothing was changed in sim (the run's files are written apart first");
+  return {.name = name,
+          .prepare =
+              [flags](const Workspace& ws) {
+                runCliIn(ws, "simulate --scene riser --max-frames 2 --out sim");
+                for (const std::string& file : kEarlierMission) {
+                  writePrevious(ws / file);
+                }
+                return "simulate --scene jacket-node --max-frames 3 --force " + flags +
+                       " --out sim";
+              },
+          .message = said,
+          .absent = {"sim/frames/000002.png", "sim/mission.mcap"},
+          .intact = kEarlierMission,
+          .file_size_limit_kib = file_limit_kib,
+          .holds = {{"sim/mission.yaml", "name: riser / vertical"}}};
+}
+
 std::string importCommand(const Workspace& ws) {
   std::filesystem::copy_file(testData("oculus/one_ping_8bit.raw"), ws / "ping.raw");
   return "import --format oculus ping.raw";
@@ -66,6 +93,25 @@ std::vector<CatalogueCase> failedRunCases() {
                        {"write failed: File too large"}, 1),
       removesNewFolder("SimulateOnAFullDisk", "simulate --scene riser --max-frames 1",
                        {"write failed: File too large"}, 8),
+      // Its first frame cannot be written; then its bag (--format), once the mission is whole.
+      keepsEarlierMission("SimulateForceOnAFullDiskKeepsTheEarlierMission", "",
+                          {"sim/frames/000000.png", "write failed: File too large"}, 8),
+      keepsEarlierMission("SimulateForceFailingOnItsBagKeepsTheEarlierMission", "--format mcap",
+                          {"sim/mission.mcap", "write failed: File too large"}, 1400),
+      // One that succeeds leaves its own mission only: the earlier frames past its own and the
+      // earlier bag are removed, and said so.
+      {.name = "SimulateForceReplacesTheEarlierMissionWhole",
+       .prepare =
+           [](const Workspace& ws) {
+             runCliIn(ws, "simulate --scene riser --max-frames 3 --format mcap --out sim");
+             return std::string("simulate --scene jacket-node --max-frames 1 --force --out sim");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"removed sim/mission.mcap of an earlier run"},
+       .absent = {"sim/frames/000001.png", "sim/frames/000002.png", "sim/mission.mcap"},
+       .holds = {{"sim/mission.yaml", "name: jacket-node / vertical"},
+                 {"sim/frames.csv", "frames/000000.png"},
+                 {"sim/simulation.yaml", "jacket-node"}}},
       keepsEarlierResult("ReconstructWithNoFrameSelectedKeepsAnEarlierResult", "--first-frame 20",
                          {"frames.first (--first-frame)"}),
       keepsEarlierResult("ReconstructOffTheClockKeepsAnEarlierResult", "--time-offset 1000",
