@@ -292,7 +292,8 @@ TEST(RosBag, TheOlderSonarImageIsReadInItsOwnFrameAndLayout) {
   EXPECT_NEAR(polar.range_m, 5.05, 1e-5);
 }
 
-TEST(RosBag, RangesAreBinCentresAndAFirstCentreAtZeroIsSaid) {
+// A message of 3 beams 10 degrees apart and 4 range bins centred from 1.05 m, 0.1 m apart.
+ProjectedSonarImageMsg threeBeamMessage() {
   ProjectedSonarImageMsg msg;
   for (int b = 0; b < 3; ++b) {
     msg.beam_directions.push_back(
@@ -300,6 +301,11 @@ TEST(RosBag, RangesAreBinCentresAndAFirstCentreAtZeroIsSaid) {
   }
   msg.beam_count = 3;
   msg.ranges_m = {1.05F, 1.15F, 1.25F, 1.35F};
+  return msg;
+}
+
+TEST(RosBag, RangesAreBinCentresAndAFirstCentreAtZeroIsSaid) {
+  ProjectedSonarImageMsg msg = threeBeamMessage();
   BagSonarGeometry g = bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor, std::nullopt,
                                         "s", "bag", "message 0");
   EXPECT_NEAR(g.sonar.range().min_m, 1.0, 1e-6);  // centres: the bins start half a bin before
@@ -321,6 +327,32 @@ TEST(RosBag, RangesAreBinCentresAndAFirstCentreAtZeroIsSaid) {
                          "message 0");
       },
       {"bag", "message 0", "ranges[", "expected equally spaced range bins"});
+}
+
+// The first message sets the bag's geometry; a later one out of any sonar (an aperture of
+// nothing, a sound speed of 1e30) is refused, so that the reader skips and reports it.
+TEST(RosBag, ALaterMessageIsHeldToTheRangesOfItsApertureAndSoundSpeed) {
+  ProjectedSonarImageMsg msg = threeBeamMessage();
+  msg.tx_beamwidths_rad = {0.35F, 0.35F, 0.35F};
+  const std::vector<std::uint8_t> data(3 * 4 * sonarDtypeSize(msg.dtype), 0);
+  msg.data = data;
+  const BagSonarGeometry g = bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor,
+                                              std::nullopt, "s", "bag", "message 0");
+  checkBagSonarMessage(msg, g, "bag", "message 1");
+  ProjectedSonarImageMsg later = msg;
+  later.tx_beamwidths_rad = {1e-30F, 1e-30F, 1e-30F};
+  test::expectError([&] { checkBagSonarMessage(later, g, "bag", "message 2"); },
+                    {"bag", "message 2", "ping_info.tx_beamwidths: expected 0.1 to 180"});
+  // --aperture-deg overrides every message's: their tx_beamwidths are not read.
+  const BagSonarGeometry given = bagSonarGeometry(msg, SonarAxes::Auto, ImageLayout::RangeMajor,
+                                                  12.0, "s", "bag", "message 0");
+  checkBagSonarMessage(later, given, "bag", "message 2");
+  later = msg;
+  later.sound_speed_mps = 1e30F;
+  test::expectError([&] { checkBagSonarMessage(later, g, "bag", "message 3"); },
+                    {"bag", "message 3", "sound_speed: expected 1000 to 2000 m/s"});
+  later.sound_speed_mps = 1450.0F;
+  checkBagSonarMessage(later, g, "bag", "message 3");
 }
 
 TEST(RosBag, PoseFramesFollowREP103UnlessTheirNamesSayNedAndFrd) {

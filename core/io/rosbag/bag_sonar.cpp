@@ -74,12 +74,9 @@ RangeBins rangeBinsOf(const std::vector<float>& ranges, const std::string& sourc
   return {std::max(0.0, start), resolution, static_cast<int>(ranges.size())};
 }
 
-double apertureOf(const ProjectedSonarImageMsg& msg, std::optional<double> aperture_deg,
-                  std::vector<std::string>& notes) {
-  if (aperture_deg) {
-    notes.push_back("vertical aperture " + fixed(*aperture_deg, 2) + " deg (--aperture-deg)");
-    return degToRad(*aperture_deg);
-  }
+// A message's transmit beam width: the median of its tx_beamwidths between 0 and pi, or
+// nothing when it gives none.
+std::optional<double> messageAperture(const ProjectedSonarImageMsg& msg) {
   std::vector<float> widths;
   for (const float w : msg.tx_beamwidths_rad) {
     if (std::isfinite(w) && w > 0.0F && w < std::numbers::pi) {
@@ -87,13 +84,26 @@ double apertureOf(const ProjectedSonarImageMsg& msg, std::optional<double> apert
     }
   }
   if (widths.empty()) {
+    return std::nullopt;
+  }
+  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+  return widths[widths.size() / 2];
+}
+
+double apertureOf(const ProjectedSonarImageMsg& msg, std::optional<double> aperture_deg,
+                  std::vector<std::string>& notes) {
+  if (aperture_deg) {
+    notes.push_back("vertical aperture " + fixed(*aperture_deg, 2) + " deg (--aperture-deg)");
+    return degToRad(*aperture_deg);
+  }
+  const std::optional<double> width = messageAperture(msg);
+  if (!width) {
     notes.push_back("vertical aperture " + fixed(kBagDefaultApertureDeg, 2) +
                     " deg assumed: the messages give no tx_beamwidths; override it with "
                     "--aperture-deg");
     return degToRad(kBagDefaultApertureDeg);
   }
-  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
-  const double aperture = widths[widths.size() / 2];
+  const double aperture = *width;
   notes.push_back("vertical aperture " + fixed(radToDeg(aperture), 2) +
                   " deg: the transmit beam width (ping_info.tx_beamwidths)");
   return aperture;
@@ -188,7 +198,8 @@ BagSonarGeometry bagSonarGeometry(const ProjectedSonarImageMsg& msg, SonarAxes a
                      msg.beam_directions,
                      order,
                      msg.ranges_m.size(),
-                     {}};
+                     {},
+                     !aperture_deg};
   g.notes.push_back(
       std::string("sonar axes ") + std::string(toString(resolved)) +
       (axes == SonarAxes::Auto
@@ -233,6 +244,13 @@ void checkBagSonarMessage(const ProjectedSonarImageMsg& msg, const BagSonarGeome
   if (msg.sound_speed_mps != 0.0F) {
     if (const auto problem = outsideRange(msg.sound_speed_mps, kSoundSpeed)) {
       throw Error(source, place, "sound_speed: " + *problem + " (or 0 when not known)");
+    }
+  }
+  // A later message's aperture is not used (one geometry per bag), but one out of any sonar is
+  // a corrupt message, as the first's would be.
+  if (const auto aperture = messageAperture(msg); aperture && g.aperture_from_messages) {
+    if (const auto problem = outsideRange(radToDeg(*aperture), kVerticalAperture)) {
+      throw Error(source, place, "ping_info.tx_beamwidths: " + *problem);
     }
   }
   const std::size_t size = sonarDtypeSize(msg.dtype);

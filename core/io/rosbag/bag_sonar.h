@@ -28,6 +28,9 @@ struct BagSonarGeometry {
   std::vector<int> beam_of_column;               ///< message beam of each image column
   std::size_t ranges = 0;
   std::vector<std::string> notes;  ///< what was assumed, for `info`
+  /// The aperture is the messages' (tx_beamwidths), not --aperture-deg's: each message's is
+  /// checked against the physical range, as the first's was.
+  bool aperture_from_messages = false;
 };
 
 /// The geometry of the first message. Throws Error (source, place, what was expected) for
@@ -37,7 +40,9 @@ BagSonarGeometry bagSonarGeometry(const ProjectedSonarImageMsg& msg, SonarAxes a
                                   const std::string& sonar_id, const std::string& source,
                                   const std::string& place);
 
-/// Throws Error unless the message has `geometry`'s beams and ranges and data of that size.
+/// Throws Error unless the message has `geometry`'s beams and ranges and data of that size, a
+/// sound speed within the physical range (or 0) and, when the aperture is the messages', an
+/// aperture (tx_beamwidths) within it.
 void checkBagSonarMessage(const ProjectedSonarImageMsg& msg, const BagSonarGeometry& geometry,
                           const std::string& source, const std::string& place);
 

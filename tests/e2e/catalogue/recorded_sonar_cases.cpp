@@ -91,6 +91,54 @@ CatalogueCase bagGeometry(const std::string& name, double near_m, double resolut
           .absent = {"out"}};
 }
 
+// Where each sonar message of a bag written from the example mission holds its
+// ping_info.tx_beamwidths: the sequence's length (one width a beam) and the widths, all the
+// mission's aperture. Its sound_speed is the float before.
+std::vector<std::size_t> txBeamwidthsAt(const std::string& bag, const SonarModel& sonar) {
+  std::string pattern(4, '\0');
+  const auto beams = static_cast<std::uint32_t>(sonar.cols());
+  std::memcpy(pattern.data(), &beams, 4);
+  const auto aperture = static_cast<float>(sonar.verticalAperture());
+  for (std::uint32_t b = 0; b < beams; ++b) {
+    pattern.append(reinterpret_cast<const char*>(&aperture), 4);
+  }
+  std::vector<std::size_t> found;
+  for (auto at = bag.find(pattern); at != std::string::npos; at = bag.find(pattern, at + 1)) {
+    found.push_back(at);
+  }
+  return found;
+}
+
+// The example mission as an MCAP bag (messages in the data section: no chunk CRC to keep),
+// each sonar message's ping_info changed by `change` (its bytes, where its tx_beamwidths start,
+// the message's index), read by `info`.
+CatalogueCase bagPingInfo(const std::string& name,
+                          std::function<void(std::string&, std::size_t, std::size_t)> change,
+                          const std::vector<std::string>& message) {
+  return {.name = name,
+          .prepare =
+              [change](const Workspace& ws) {
+                const Mission mission = readMission(ws.mission());
+                BagWriteOptions options;
+                options.format = BagFormat::McapUnchunked;
+                writeRosBag(mission, ws / "bag.mcap", options);
+                std::string bytes = readText(ws / "bag.mcap");
+                const std::vector<std::size_t> at = txBeamwidthsAt(bytes, mission.sonar);
+                EXPECT_EQ(at.size(), mission.frames.size());
+                for (std::size_t i = 0; i < at.size(); ++i) {
+                  change(bytes, at[i], i);
+                }
+                writeBytes(ws / "bag.mcap", bytes);
+                return std::string("info bag.mcap");
+              },
+          .outcome = Outcome::Succeeds,
+          .message = message};
+}
+
+void setFloat(std::string& bytes, std::size_t at, float value) {
+  std::memcpy(bytes.data() + at, &value, sizeof value);
+}
+
 }  // namespace
 
 std::vector<CatalogueCase> recordedSonarCases() {
@@ -134,6 +182,30 @@ std::vector<CatalogueCase> recordedSonarCases() {
                   "degrees, got"),
       bagGeometry("BagApertureOfNothing", 0.0, 0.01, step, 1e-30,
                   "ping_info.tx_beamwidths: expected 0.1 to 180 (excluded) degrees, got"),
+      // The sound speed changes from message to message within the sea's: every frame is read
+      // (ranges are in metres, the sound speed is not used).
+      bagPingInfo("BagSoundSpeedChangingWithinItsRange",
+                  [](std::string& bytes, std::size_t at, std::size_t i) {
+                    setFloat(bytes, at - 4, 1500.0F - 10.0F * static_cast<float>(i));
+                  },
+                  {"Frames       10,"}),
+      // A later message out of any sea, or whose aperture is nothing, is skipped and reported.
+      bagPingInfo("BagSoundSpeedHugeInALaterMessage",
+                  [](std::string& bytes, std::size_t at, std::size_t i) {
+                    setFloat(bytes, at - 4, i == 3 ? 1e30F : 1500.0F);
+                  },
+                  {"Frames       9,", "bag.mcap: message ",
+                   "sound_speed: expected 1000 to 2000 m/s, got 1.0000000150474662e+30 (or 0 "
+                   "when not known) (message skipped)"}),
+      bagPingInfo("BagApertureOfNothingInALaterMessage",
+                  [](std::string& bytes, std::size_t at, std::size_t i) {
+                    for (std::size_t b = 0; i == 3 && b < 64; ++b) {
+                      setFloat(bytes, at + 4 + 4 * b, 1e-30F);
+                    }
+                  },
+                  {"Frames       9,", "bag.mcap: message ",
+                   "ping_info.tx_beamwidths: expected 0.1 to 180 (excluded) degrees, got "
+                   "5.729577969477164e-29 (message skipped)"}),
   };
 }
 
