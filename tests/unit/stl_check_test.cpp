@@ -54,5 +54,18 @@ TEST(StlCheck, CutFilesNameTheByteAndWhatWasExpected) {
                     {"mesh.stl: byte 38: truncated ASCII STL: expected 'endsolid' at the end"});
 }
 
+// VTK reads as many triangles as the file's size holds: a count that says fewer (a triangle
+// then a hole of zeros, two files joined) is refused; less than a triangle of trailing bytes
+// is not one.
+TEST(StlCheck, AFileLongerThanItsCountIsRefusedAndTheCountIsReturned) {
+  const test::ScratchDir dir;
+  test::expectError([&] { checkStlFile(write(dir, binaryStl(1, 1000, "joined"))); },
+                    {"mesh.stl: byte 134: binary STL longer than its header says: the header "
+                     "declares 1 triangles",
+                     "the file has 50084, room for 1000 triangles"});
+  EXPECT_EQ(checkStlFile(write(dir, binaryStl(3, 3, "whole") + std::string(49, '\0'))), 3U);
+  EXPECT_EQ(checkStlFile(write(dir, "solid t\nendsolid t\n")), std::nullopt);
+}
+
 }  // namespace
 }  // namespace sonarcarve

@@ -15,11 +15,12 @@ namespace {
 constexpr std::uintmax_t kHeaderBytes = 84;  // 80 bytes of text, u32 triangle count
 constexpr std::uintmax_t kTriangleBytes = 50;
 
-std::string fileText(const std::filesystem::path& path) {
+std::string fileText(const std::filesystem::path& path, std::streamsize at_most) {
   std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::string text(static_cast<std::size_t>(at_most), '\0');
+  in.read(text.data(), at_most);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
 }
 
 // VTK reads a file as ASCII only if its first 256 bytes are text; "solid" at the start is not
@@ -37,23 +38,24 @@ bool looksLikeText(const std::string& bytes) {
 
 }  // namespace
 
-void checkStlFile(const std::filesystem::path& path) {
+std::optional<std::uint32_t> checkStlFile(const std::filesystem::path& path) {
   const std::string file = path.string();
-  const std::string bytes = fileText(path);
-  const std::uintmax_t size = bytes.size();
+  const std::uintmax_t size = std::filesystem::file_size(path);
+  const std::string head = fileText(path, 256);
   std::uint32_t declared = 0;
   if (size >= kHeaderBytes) {
-    std::memcpy(&declared, bytes.data() + 80, sizeof declared);
+    std::memcpy(&declared, head.data() + 80, sizeof declared);
   }
   const std::uintmax_t binary_size = kHeaderBytes + kTriangleBytes * std::uintmax_t{declared};
-  const auto first = bytes.find_first_not_of(" \t\r\n");
+  const auto first = head.find_first_not_of(" \t\r\n");
   const bool says_solid =
-      first != std::string::npos && bytes.compare(first, 5, "solid") == 0 && looksLikeText(bytes);
+      first != std::string::npos && head.compare(first, 5, "solid") == 0 && looksLikeText(head);
   if (says_solid && !(size >= kHeaderBytes && size >= binary_size && declared > 0)) {
+    const std::string bytes = fileText(path, static_cast<std::streamsize>(size));
     if (bytes.find("endsolid") == std::string::npos) {
       throw Error(file, bytePlace(size), "truncated ASCII STL: expected 'endsolid' at the end");
     }
-    return;
+    return std::nullopt;
   }
   if (size < kHeaderBytes) {
     throw Error(file, bytePlace(size),
@@ -61,12 +63,20 @@ void checkStlFile(const std::filesystem::path& path) {
                 "bytes), the file has " +
                     std::to_string(size));
   }
+  const std::string declares = "the header declares " + std::to_string(declared) +
+                               " triangles (84 + 50 x " + std::to_string(declared) + " = " +
+                               std::to_string(binary_size) + " bytes), the file has " +
+                               std::to_string(size);
   if (size < binary_size) {
-    throw Error(file, bytePlace(size),
-                "truncated binary STL: the header declares " + std::to_string(declared) +
-                    " triangles (84 + 50 x " + std::to_string(declared) + " = " +
-                    std::to_string(binary_size) + " bytes), the file has " + std::to_string(size));
+    throw Error(file, bytePlace(size), "truncated binary STL: " + declares);
   }
+  if (size - binary_size >= kTriangleBytes) {
+    throw Error(file, bytePlace(binary_size),
+                "binary STL longer than its header says: " + declares + ", room for " +
+                    std::to_string((size - kHeaderBytes) / kTriangleBytes) +
+                    " triangles: expected the count of the triangles it holds");
+  }
+  return declared;
 }
 
 }  // namespace sonarcarve

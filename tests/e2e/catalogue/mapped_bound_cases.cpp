@@ -135,6 +135,11 @@ std::vector<CatalogueCase> mappedBoundCases() {
                    {"reference.stl: byte 134: truncated binary STL: the header declares "
                     "2147483648 triangles (84 + 50 x 2147483648 = 107374182484 bytes), the file "
                     "has 134"}),
+      // Small enough to be read: VTK read what the file's size holds, whatever its count said.
+      stlReference("StlDeclaringOneTriangleBeforeA64MiBHole", 1, std::uint64_t{64} << 20,
+                   {"reference.stl: byte 134: binary STL longer than its header says: the header "
+                    "declares 1 triangles (84 + 50 x 1 = 134 bytes), the file has 67108864, room "
+                    "for 1342175 triangles: expected the count of the triangles it holds"}),
       stlReference("StlOf20GiBDeclaringOneTriangle", 1, k20GiB,
                    {"reference.stl: ", "needs up to 163840 MiB to read, more than the"}),
       stlReference("StlOf20GiBDeclaringItsTriangles",

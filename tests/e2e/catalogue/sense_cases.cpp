@@ -5,6 +5,7 @@
 // recording whose frame headers carry no vehicle attitude; a run that ends with an empty or
 // nearly empty surface. Each is refused naming the file, the place and what was expected, or,
 // for a run's result, said on stderr and in report.json.
+#include <cstring>
 #include <limits>
 
 #include "e2e/catalogue/catalogue.h"
@@ -246,6 +247,41 @@ void appendPlyCases(std::vector<CatalogueCase>& cases) {
                                   asciiPly({{2, 0, 10}, {2.1, 0, 10}}) + "2 0 10.1\n", "vertex 2"));
 }
 
+// A mesh without a surface: triangles whose corners lie on one point or one line, as a file of
+// zeros (sparse, or filled with zeros) reads. As an evaluation's reference it gave an accuracy
+// of "inf m" with exit 0; as a simulator's scene, frames of nothing.
+CatalogueCase meshWithoutSurface(const std::string& name, const std::string& file,
+                                 const std::string& bytes, bool as_scene,
+                                 const std::string& triangles) {
+  return {.name = name,
+          .prepare =
+              [file, bytes, as_scene](const Workspace& ws) {
+                writeBytes(ws / file, bytes);
+                writeBytes(ws / "cube.ply", cubePly(12, false));
+                return as_scene ? "simulate --scene " + file + " --max-frames 1 --out sim"
+                                : "evaluate --reference " + file + " --reconstruction cube.ply";
+              },
+          .message = {file + ": " + triangles +
+                      " triangles, none of which has an area (the corners of each on one point "
+                      "or line, as in a file of zeros): expected a surface"},
+          .absent = {"sim"}};
+}
+
+void appendMeshWithoutSurfaceCases(std::vector<CatalogueCase>& cases) {
+  // A binary STL declaring 1000 triangles, every byte after its count 0.
+  std::string zeros(84 + 50 * 1000, '\0');
+  const std::uint32_t count = 1000;
+  std::memcpy(zeros.data() + 80, &count, sizeof count);
+  cases.push_back(meshWithoutSurface("StlOfZerosAsReference", "zeros.stl", zeros, false, "1000"));
+  cases.push_back(meshWithoutSurface("StlOfZerosAsScene", "zeros.stl", zeros, true, "1000"));
+  const std::string on_a_line = asciiPly({{0, 0, 10}, {1, 0, 10}, {2, 0, 10}}, {{0, 1, 2}});
+  cases.push_back(
+      meshWithoutSurface("PlyOfCollinearTrianglesAsReference", "line.ply", on_a_line, false, "1"));
+  cases.push_back(meshWithoutSurface("ObjOfOnePointAsScene", "point.obj",
+                                     "v 2 0 10\nv 2 0 10\nv 2 0 10\nf 1 2 3\nf 3 2 1\n", true,
+                                     "2"));
+}
+
 // A YAML file made to hold a key twice by `make`, then `args`.
 CatalogueCase duplicateKey(const std::string& name, std::function<void(const Workspace&)> make,
                            const std::string& args, const std::vector<std::string>& message) {
@@ -363,6 +399,7 @@ std::vector<CatalogueCase> senseCases() {
   appendParameterCases(cases);
   appendNoiseModelCases(cases);
   appendPlyCases(cases);
+  appendMeshWithoutSurfaceCases(cases);
   appendDuplicateKeyCases(cases);
   appendArisCases(cases);
   cases.push_back(turningNavigation("SurfaceNearlyEmptyIsSaid", 1.0,
