@@ -4,6 +4,7 @@
 #include "geo/crs.h"
 #include "geo/crs_transform.h"
 #include "io/mission/nav_positions.h"
+#include "sonar/mission_origin.h"
 
 namespace sonarcarve {
 namespace {
@@ -72,7 +73,14 @@ std::optional<Eigen::Vector3d> declaredOrigin(const YAML::Node& root, const Yaml
                 "PROJ cannot place it on the grid of " + grid_crs + " (" + to_grid.lastError() +
                     "): expected a point inside the CRS's area");
   }
-  return Eigen::Vector3d(grid->y(), grid->x(), depth_m);
+  // Where no survey lies, the origin is the error, not the navigation moved by it.
+  const Eigen::Vector3d placed(grid->y(), grid->x(), depth_m);
+  try {
+    requirePlausiblePosition(placed, "", "");
+  } catch (const Error& e) {
+    fields.fail(origin, "origin", e.message());
+  }
+  return placed;
 }
 
 }  // namespace sonarcarve

@@ -49,6 +49,22 @@ std::vector<CatalogueCase> geoCases() {
                   "origin: {latitude_deg: 43, longitude_deg: 3, depth_m: 0}\n",
                   {"mission.yaml: line 16: origin", "the navigation is NED without a CRS",
                    "expected crs: EPSG:NNNN"}),
+      // An origin where no survey lies is the origin's error, not the navigation's (each was
+      // blamed on nav.csv's first sample, moved by it beyond 1e8 m).
+      missionYaml("OriginNorthingOffTheEarth",
+                  "crs: EPSG:32631\norigin: {easting_m: 500000, northing_m: -1e12, depth_m: 0}\n",
+                  {"mission.yaml: line 17: origin: position (north, east, down) = "
+                   "(-1000000000000, 500000, 0) m: expected finite coordinates within 1e8 m"}),
+      missionYaml("OriginEastingOfOneE300",
+                  "crs: EPSG:32631\norigin: {easting_m: 1e300, northing_m: 4760800, "
+                  "depth_m: 0}\n",
+                  {"mission.yaml: line 17: origin: position (north, east, down) =",
+                   "expected finite coordinates within 1e8 m"}),
+      missionYaml("GeodeticOriginAMillionKilometresDeep",
+                  "crs: EPSG:32631\norigin: {latitude_deg: 43, longitude_deg: 3, "
+                  "depth_m: 1e9}\n",
+                  {"mission.yaml: line 17: origin: position (north, east, down) =",
+                   "1000000000) m: expected finite coordinates within 1e8 m"}),
       {.name = "NavWithLatitudeLongitudeAndNorthEast",
        .prepare =
            [](const Workspace& ws) {
