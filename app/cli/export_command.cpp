@@ -53,7 +53,7 @@ void addExportCommand(CLI::App& app, int& exit_code) {
                   "geotiff: edge of the seabed grid's cells, m (the grid: docs/formats.md, "
                   "\"Seabed elevation (GeoTIFF)\")")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(SeabedGridParams::kCell.min, SeabedGridParams::kCell.max));
   cmd->add_flag("--points", o->points,
                 "Export the surface points instead of the mesh (PLY; LAS always holds "
                 "the points: x east, y north, z up, in the mission's CRS when it has one)");

@@ -338,9 +338,19 @@ ExportOptions zUpOptions(const ExportOptions& o) {
   return las;
 }
 
+// The points to export, or an Error naming `path` when none is left (an empty reconstruction,
+// or a crop box that holds none): a file of no point is no export, as a mesh of no triangle.
+// (LAS and GeoTIFF exports of an empty crop box were written, with exit 0.)
+Prepared requirePoints(Prepared m, const std::filesystem::path& path) {
+  if (m.positions.empty()) {
+    throw Error(path.string(), "", "no point to export (empty reconstruction or crop box)");
+  }
+  return m;
+}
+
 std::string lasFileBytes(const SurfacePoints& points, const std::filesystem::path& path,
                          const ExportOptions& o) {
-  const Prepared m = prepared(points, o);
+  const Prepared m = requirePoints(prepared(points, o), path);
   LasCloud cloud;
   if (!o.target_crs.empty()) {
     cloud.crs_wkt = crsWkt(o.target_crs, "export", "crs");
@@ -356,6 +366,11 @@ std::string lasFileBytes(const SurfacePoints& points, const std::filesystem::pat
   return lasBytes(cloud, path.string());
 }
 
+// "1e+300 0 nan": a point as given, for a message.
+std::string numbersText(const Eigen::Vector3d& p) {
+  return shortestNumber(p.x()) + " " + shortestNumber(p.y()) + " " + shortestNumber(p.z());
+}
+
 }  // namespace
 
 void ExportOptions::validate() const {
@@ -366,8 +381,21 @@ void ExportOptions::validate() const {
   if (frame != "ned" && frame != "zup") {
     throw Error("export", "frame", "expected ned or zup");
   }
-  if (!mission_origin_ned_m.allFinite() || !origin_ned_m.allFinite()) {
-    throw Error("export", "origin", "expected finite origins (metres, NED)");
+  // Beyond where any survey lies (kMaxNavCoordinate_m), an origin turned float32 coordinates
+  // into infinities, written with exit 0.
+  for (const Eigen::Vector3d& origin : {mission_origin_ned_m, origin_ned_m}) {
+    if (!origin.allFinite() || origin.cwiseAbs().maxCoeff() > kMaxNavCoordinate_m) {
+      throw Error(
+          "export", "origin",
+          "expected finite origins within 1e8 m of zero (metres, NED), got " + numbersText(origin));
+    }
+  }
+  if (crop_ned_m && !(crop_ned_m->min().allFinite() && crop_ned_m->max().allFinite() &&
+                      (crop_ned_m->min().array() <= crop_ned_m->max().array()).all())) {
+    throw Error("export", "crop",
+                "expected a box N0 E0 D0 N1 E1 D1 of finite numbers, each of N0, E0, D0 at most "
+                "N1, E1, D1 (metres, NED), got " +
+                    numbersText(crop_ned_m->min()) + " to " + numbersText(crop_ned_m->max()));
   }
   if (!target_crs.empty()) {
     validateTarget(*this);
@@ -425,7 +453,8 @@ void exportPoints(const SurfacePoints& points, const std::filesystem::path& path
   if (options.format != "ply" && options.format != "ply-ascii") {
     throw Error(path.string(), "", "points are exported as PLY or LAS only");
   }
-  writeFileAtomically(path, plyText(prepared(points, options), options.format == "ply-ascii"));
+  writeFileAtomically(
+      path, plyText(requirePoints(prepared(points, options), path), options.format == "ply-ascii"));
 }
 
 void exportSeabedGrid(const SurfacePoints& points, const std::filesystem::path& path,
@@ -433,7 +462,7 @@ void exportSeabedGrid(const SurfacePoints& points, const std::filesystem::path& 
   options.validate();
   const ExportOptions o = zUpOptions(options);
   o.validate();
-  HeightRaster raster = seabedGrid(prepared(points, o).positions, grid);
+  HeightRaster raster = seabedGrid(requirePoints(prepared(points, o), path).positions, grid);
   if (!o.target_crs.empty()) {
     raster.crs_wkt = crsWkt(o.target_crs, "export", "crs");
   }

@@ -35,8 +35,8 @@ double SeabedGridParams::band_m() const {
 }
 
 HeightRaster seabedGrid(const std::vector<Eigen::Vector3d>& points, const SeabedGridParams& p) {
-  if (!(p.cell_m > 0.0) || !std::isfinite(p.cell_m)) {
-    throw Error("export", "cell", "expected a positive cell size in metres");
+  if (const auto problem = outsideRange(p.cell_m, SeabedGridParams::kCell)) {
+    throw Error("export", "cell", "the edge of the seabed grid's cells: " + *problem);
   }
   HeightRaster raster;
   raster.cell_m = p.cell_m;

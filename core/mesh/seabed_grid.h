@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "io/raster/geotiff_file.h"
+#include "sonar/sonar_ranges.h"
 
 namespace sonarcarve {
 
@@ -25,11 +26,14 @@ struct SeabedGridParams {
   double band_m() const;
   static constexpr double kLowQuantile = 0.1;
   static constexpr std::size_t kMinPoints = 3;
+  /// A cell's edge: a millimetre (under any voxel) to a kilometre (a whole survey in a few
+  /// cells); 1e300 m wrote a raster whose corners were 1e300 m away, with exit 0.
+  static constexpr PhysicalRange kCell{1e-3, 1000.0, "m"};
 };
 
 /// The grid over the points' box (cells of `params.cell_m`, edges on its multiples), heights
-/// as above, no CRS (the caller sets it). Throws Error("export", "cell", ...) on a cell that is
-/// not positive or a grid over 2e8 cells.
+/// as above, no CRS (the caller sets it). Throws Error("export", "cell", ...) on a cell outside
+/// SeabedGridParams::kCell or a grid over 2e8 cells.
 HeightRaster seabedGrid(const std::vector<Eigen::Vector3d>& points_xyz_up,
                         const SeabedGridParams& params);
 

@@ -73,9 +73,13 @@ TEST(SeabedGrid, LowestSurfaceMedianPerCellAlignedOnTheCellSize) {
 
 TEST(SeabedGrid, RefusesABadCellAndGivesNothingForNoPoints) {
   SeabedGridParams params;
-  params.cell_m = 0.0;
-  expectError([&] { seabedGrid(scene(), params); }, {"export: cell", "positive cell size"});
-  params.cell_m = 1e-4;
+  for (const auto& [cell, got] : {std::pair{0.0, "got 0"}, std::pair{1e300, "got 1e+300"},
+                                  std::pair{std::nan(""), "got nan"}}) {
+    params.cell_m = cell;
+    expectError([&] { seabedGrid(scene(), params); },
+                {"export: cell", "expected 0.001 to 1000 m", got});
+  }
+  params.cell_m = 1e-3;
   expectError(
       [&] {
         seabedGrid({{0, 0, 0}, {1e4, 1e4, 0}}, params);

@@ -43,6 +43,19 @@ CatalogueCase exportFullDisk(const std::string& name, const std::string& file,
           .file_size_limit_kib = kFullDiskKib};
 }
 
+// An export with `flags` onto an earlier `file`, which must stay: refused by `message`.
+CatalogueCase exportRefused(const std::string& name, const std::string& file,
+                            const std::string& flags, const std::string& message) {
+  return {.name = name,
+          .prepare =
+              [file, flags](const Workspace& ws) {
+                writePrevious(ws / file);
+                return "export " + writeReconstruction(ws) + " " + flags + " --out " + file;
+              },
+          .message = {message},
+          .intact = {file}};
+}
+
 }  // namespace
 
 std::vector<CatalogueCase> outputCases() {
@@ -277,14 +290,29 @@ std::vector<CatalogueCase> outputCases() {
              return "export " + writeReconstruction(ws) + " --out /sys/seabed.tif";
            },
        .message = {"/sys/seabed.tif: cannot create a file in /sys"}},
-      {.name = "ExportGeoTiffWithCellsTooSmall",
-       .prepare =
-           [](const Workspace& ws) {
-             writePrevious(ws / "seabed.tif");
-             return "export " + writeReconstruction(ws) + " --cell 0.00001 --out seabed.tif";
-           },
-       .message = {"export: cell", "cells over the points: expected a larger cell"},
-       .intact = {"seabed.tif"}},
+      // A cell's edge within a millimetre and a kilometre (a grid past 2e8 cells is refused
+      // too: SeabedGrid's unit test); 1e300 m wrote a raster whose corners were 1e300 m away.
+      exportRefused("ExportGeoTiffWithCellsTooSmall", "seabed.tif", "--cell 0.00001",
+                    "--cell: Value 0.00001 not in range 0.001000 to 1000.000000"),
+      exportRefused("ExportGeoTiffWithCellsOf1e300", "seabed.tif", "--cell 1e300",
+                    "--cell: Value 1e300 not in range 0.001000 to 1000.000000"),
+      exportRefused("ExportGeoTiffWithCellsNaN", "seabed.tif", "--cell nan",
+                    "export: cell: the edge of the seabed grid's cells: expected 0.001 to 1000 m, "
+                    "got nan"),
+      // A crop box that holds no point writes no file of no point (as no mesh of no triangle);
+      // one that is not a box, or an origin beyond any survey, is refused by its flag. Each was
+      // written with exit 0 (an origin of 1e300 m as float32 infinities).
+      exportRefused("ExportLasOfAnEmptyCropBox", "points.las",
+                    "--format las --crop 100 100 100 101 101 101",
+                    "points.las: no point to export (empty reconstruction or crop box)"),
+      exportRefused("ExportGeoTiffOfAnEmptyCropBox", "seabed.tif", "--crop 100 100 100 101 101 101",
+                    "seabed.tif: no point to export (empty reconstruction or crop box)"),
+      exportRefused("ExportWithAnInvertedCropBox", "points.las", "--crop 5 5 5 -5 -5 -5",
+                    "export: crop: expected a box N0 E0 D0 N1 E1 D1 of finite numbers, each of "
+                    "N0, E0, D0 at most N1, E1, D1 (metres, NED), got 5 5 5 to -5 -5 -5"),
+      exportRefused("ExportWithAnOriginOf1e300", "mesh.ply", "--origin 1e300 0 0",
+                    "export: origin: expected finite origins within 1e8 m of zero (metres, NED), "
+                    "got 1e+300 0 0"),
       {.name = "ExportLasOntoAFolder",
        .prepare =
            [](const Workspace& ws) {
