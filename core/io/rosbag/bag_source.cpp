@@ -69,13 +69,25 @@ std::string kindName(RosMessageKind kind) {
   return "other";
 }
 
+// The types a topic asked for by a flag must have. (--fix-topic on an Odometry topic was told
+// "expected nav_msgs/msg/Odometry, ...", the kind of --nav-topic.)
 std::string expectedOf(RosMessageKind kind) {
-  return kind == RosMessageKind::SonarImage
-             ? std::string(kProjectedSonarImageType) +
-                   " (or acoustic_msgs/msg/SonarImage), or raw Oculus pings (a uint8[] field "
-                   "starting with the Oculus magic 53 4F)"
-             : "nav_msgs/msg/Odometry, geometry_msgs/msg/PoseStamped or "
-               "geometry_msgs/msg/PoseWithCovarianceStamped";
+  switch (kind) {
+    case RosMessageKind::SonarImage:
+      return std::string(kProjectedSonarImageType) +
+             " (or acoustic_msgs/msg/SonarImage), or raw Oculus pings (a uint8[] field starting "
+             "with the Oculus magic 53 4F)";
+    case RosMessageKind::VehiclePose:
+      return "nav_msgs/msg/Odometry, geometry_msgs/msg/PoseStamped or "
+             "geometry_msgs/msg/PoseWithCovarianceStamped";
+    case RosMessageKind::Transforms:
+      return kTfMessageType;
+    case RosMessageKind::GeoFix:
+      return kNavSatFixType;
+    case RosMessageKind::Other:
+      break;
+  }
+  return "a known message type";
 }
 
 // The topic to read: the one `requested`, or else the only topic of `kind`. Returns nothing

@@ -101,6 +101,12 @@ std::vector<CatalogueCase> bagCases() {
               },
               "info bag.mcap", Outcome::Succeeds,
               {"topic /fix: fixes left out:", "with a latitude, longitude or altitude not finite"}),
+      // A flag naming a topic of another kind says what that flag needs (--fix-topic on the
+      // Odometry was told it expected an Odometry).
+      fixCase("FixTopicOfAnotherType", [](NavSatFixMsg&, std::size_t) {},
+              "info bag.mcap --fix-topic /odometry", Outcome::Fails,
+              {"bag.mcap: topic /odometry: type nav_msgs/msg/Odometry (--fix-topic): expected "
+               "sensor_msgs/msg/NavSatFix"}),
       fixCase("NavSatFixAllWithoutAFix",
               [](NavSatFixMsg& f, std::size_t) { f.status = kNavSatStatusNoFix; },
               "reconstruct bag.mcap --out out", Outcome::Fails,
