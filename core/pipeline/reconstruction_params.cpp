@@ -143,8 +143,23 @@ YAML::Node nodeAt(YAML::Node node, const std::string& key) {
   return node;
 }
 
+// A SonarCarve file of another kind says what it is in its `format` key (a mission.yaml, a
+// workbench session), which no parameters file has: that is named, not the key as unknown.
+void requireParametersFile(const YAML::Node& root, const YamlFields& f) {
+  const YAML::Node format = root.IsMap() ? root["format"] : YAML::Node();
+  if (format && format.IsScalar()) {
+    f.fail(
+        format, "format",
+        "the file says it is a " + format.Scalar() +
+            " file, not a parameters file: expected a parameters YAML (a run's params.yaml, "
+            "or sonarcarve-cli params --yaml)" +
+            (format.Scalar() == "sonarcarve-session" ? "; a session holds one as its params" : ""));
+  }
+}
+
 ReconstructionParams paramsFromYaml(const YAML::Node& root, const YamlFields& f,
                                     const std::string& path) {
+  requireParametersFile(root, f);
   ReconstructionParams p;
   ParamsReader(f, path).readMapping(root, "", p);
   try {

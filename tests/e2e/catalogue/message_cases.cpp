@@ -45,6 +45,23 @@ CatalogueCase frameIndex(const std::string& name, const std::string& index,
 std::vector<CatalogueCase> messageCases() {
   const std::string selection = "parameters: frames: the selection from frame ";
   return {
+      // A SonarCarve file of another kind given as --params is named as what it is, not by its
+      // `format` key as unknown.
+      {.name = "ParamsFileThatIsASession",
+       .prepare =
+           [](const Workspace& ws) {
+             writeBytes(ws / "session.yaml",
+                        "format: sonarcarve-session\nversion: 1\nmission: mission\nframe: 2\n"
+                        "params: {voxel_size_m: 0.05}\n");
+             return std::string("reconstruct mission --params session.yaml --out out");
+           },
+       .message = {"session.yaml: line 1: format: the file says it is a sonarcarve-session file, "
+                   "not a parameters file: expected a parameters YAML",
+                   "a session holds one as its params"},
+       .absent = {"out"}},
+      reconstructWith("ParamsFileThatIsAMission", "--params mission/mission.yaml",
+                      {"mission.yaml: line 2: format: the file says it is a sonarcarve-mission "
+                       "file, not a parameters file"}),
       reconstructWith("SelectionPastTheLastFrame", "--first-frame 20",
                       {selection + "20 to the end (exclusive) holds none of the mission's 10 "
                                    "frames",
