@@ -289,7 +289,8 @@ void addBenchCommand(CLI::App& app, ThreadPool& pool, int& exit_code) {
                   "carve: fit the seabed in each frame and carve the water over it")
       ->capture_default_str();
   cmd->add_option("--reference-frames", o->reference_frames,
-                  "carve: frames to time the reference engine on")
+                  "carve: frames to time the reference engine on (0: none)")
+      ->check(CLI::Range(0, 1000000))
       ->capture_default_str();
   cmd->add_option("--scene", o->scene, "Demo scene")->capture_default_str();
   cmd->add_option("--frames", o->frames,

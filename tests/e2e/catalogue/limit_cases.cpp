@@ -192,6 +192,10 @@ std::vector<CatalogueCase> limitCases() {
       simulateSize("SimulateTooManyRaysPerFrame", "--elevation-step 0.01 --rays-per-beam 32",
                    {"--rays-per-beam: ", "rays per frame: expected at most 1.67772e+07",
                     "use a larger --elevation-step or fewer --rays-per-beam"}),
+      // A negative count of frames timed the reference engine on none, said as "0 frames".
+      {.name = "BenchReferenceFramesNegative",
+       .prepare = [](const Workspace&) { return std::string("bench carve --reference-frames -5"); },
+       .message = {"--reference-frames: Value -5 not in range 0 to 1000000"}},
   };
 }
 
