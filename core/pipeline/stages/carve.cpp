@@ -3,6 +3,7 @@
 // frame and, in a run that lets finished blocks go, their surface resolved as the track leaves
 // them (pipeline/evicting_surface.h).
 #include <algorithm>
+#include <optional>
 
 #include "common/error.h"
 #include "pipeline/run_context.h"
@@ -35,6 +36,24 @@ RunChoice seabedCarvingChoice(const RunContext& run, std::size_t seabed_frames,
     choice.detail = "on, a seabed explained " + std::to_string(seabed_frames) + " of " +
                     std::to_string(frames) + " frames";
   }
+  return choice;
+}
+
+// The fit (fit.enabled) works on the fast engine's map: asked of the reference engine it does
+// not run, and the run says so (it was left out without a word, exit 0).
+std::optional<RunChoice> fitLeftOutChoice(const RunContext& run) {
+  if (!run.params.fit.enabled || run.params.engine == Engine::Fast) {
+    return std::nullopt;
+  }
+  RunChoice choice;
+  choice.name = "fit";
+  choice.value = "off";
+  choice.reason =
+      "fit.enabled asks it, but the fit works on the fast engine's map: the reference engine's "
+      "surface is kept";
+  choice.detail = "off (fit.enabled: true with engine: reference)";
+  choice.action = "set engine: fast (--engine fast) to fit the map to the frames";
+  choice.warning = true;
   return choice;
 }
 
@@ -89,6 +108,9 @@ class CarvingStage : public Stage {
     }
     result.carver = std::move(carved.carver);
     run.choose(seabedCarvingChoice(run, result.carver->stats().seabed_frames, carved.used.size()));
+    if (auto fit = fitLeftOutChoice(run)) {
+      run.choose(std::move(*fit));
+    }
     std::sort(carved.carve_ms.begin(), carved.carve_ms.end());
     result.carve_ms_median =
         carved.carve_ms.empty() ? 0.0 : carved.carve_ms[carved.carve_ms.size() / 2];

@@ -62,6 +62,16 @@ std::vector<CatalogueCase> messageCases() {
       reconstructWith("ParamsFileThatIsAMission", "--params mission/mission.yaml",
                       {"mission.yaml: line 2: format: the file says it is a sonarcarve-mission "
                        "file, not a parameters file"}),
+      // A parameter the chosen engine does not apply is said, not left out without a word.
+      {.name = "FitAskedOfTheReferenceEngineIsSaid",
+       .prepare =
+           [](const Workspace&) {
+             return std::string("reconstruct mission --engine reference --fit true --out out");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"warning: fit: off: fit.enabled asks it, but the fit works on the fast "
+                   "engine's map: the reference engine's surface is kept"},
+       .holds = {{"out/report.json", "\"name\": \"fit\""}}},
       reconstructWith("SelectionPastTheLastFrame", "--first-frame 20",
                       {selection + "20 to the end (exclusive) holds none of the mission's 10 "
                                    "frames",
