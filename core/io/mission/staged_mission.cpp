@@ -26,6 +26,12 @@ std::vector<std::string> stagedNames(const StagedOutputs& staged) {
 std::vector<std::filesystem::path> publishStagedMission(
     const StagedOutputs& staged, const std::vector<std::string>& earlier_files) {
   const std::vector<std::string> names = stagedNames(staged);
+  // What is in the way of a move (a FIFO, a file where a folder goes) is refused before
+  // anything moves: the earlier mission stays whole.
+  for (const std::string& name : names) {
+    staged.requireTarget(name);
+  }
+  staged.requireTarget(kMissionFileName);
   const std::filesystem::path mission_file = staged.folder() / kMissionFileName;
   std::error_code ec;
   if (std::filesystem::is_regular_file(std::filesystem::symlink_status(mission_file, ec))) {
@@ -43,7 +49,7 @@ std::vector<std::filesystem::path> publishStagedMission(
   } catch (const Error& e) {
     throw Error(e.source(), e.place(),
                 e.message() + "; " + staged.folder().string() +
-                    " holds no mission.yaml: part of the new mission was moved in");
+                    " holds no mission.yaml: part of the new mission may have been moved in");
   }
   std::vector<std::filesystem::path> removed;
   for (const std::string& name : earlier_files) {

@@ -16,7 +16,8 @@ namespace sonarcarve {
 /// mission.yaml is removed first (so that a move that fails midway leaves no mission that
 /// reads as complete), the files and folders are moved in, mission.yaml last. Then each of
 /// `earlier_files` (names an earlier run may have written) that this mission does not hold is
-/// removed from the output folder. Returns the paths removed that way. Throws Error naming
+/// removed from the output folder. Returns the paths removed that way. What is in the way of a
+/// move (StagedOutputs::requireTarget) is refused before anything moves. Throws Error naming
 /// the file that could not be moved.
 std::vector<std::filesystem::path> publishStagedMission(
     const StagedOutputs& staged, const std::vector<std::string>& earlier_files);

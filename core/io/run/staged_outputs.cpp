@@ -86,17 +86,28 @@ void StagedOutputs::publish(const std::string& name) const {
   writeFileAtomically(output, readInputFile(staged, "a staged output", kMaxMapFileBytes));
 }
 
-void StagedOutputs::publishFolder(const std::string& name) const {
+void StagedOutputs::requireTarget(const std::string& name) const {
   const std::filesystem::path output = folder_ / name;
-  const std::filesystem::path earlier = staging_ / (".earlier-" + name);
   std::error_code ec;
+  if (!std::filesystem::is_directory(staging_ / name, ec)) {
+    outputFileTarget(output);
+    return;
+  }
   const std::filesystem::file_type kind = std::filesystem::symlink_status(output, ec).type();
-  const bool replaces = kind == std::filesystem::file_type::directory;
-  if (!replaces && kind != std::filesystem::file_type::not_found) {
+  if (kind != std::filesystem::file_type::directory &&
+      kind != std::filesystem::file_type::not_found) {
     throw Error(output.string(), "",
                 "is not a folder: expected a folder or a new path, to move the run's " + name +
                     " folder in");
   }
+}
+
+void StagedOutputs::publishFolder(const std::string& name) const {
+  requireTarget(name);
+  const std::filesystem::path output = folder_ / name;
+  const std::filesystem::path earlier = staging_ / (".earlier-" + name);
+  std::error_code ec;
+  const bool replaces = std::filesystem::is_directory(std::filesystem::symlink_status(output, ec));
   if (replaces) {
     move(output, earlier, output);
   }

@@ -33,6 +33,11 @@ class StagedOutputs {
   /// or a device refused). Throws Error naming the output file and the cause.
   void publish(const std::string& name) const;
 
+  /// Throws Error, as publish or publishFolder would, if what is at `name` in the output folder
+  /// cannot be replaced by the staged `name` (a FIFO where a file goes, a file where a folder
+  /// goes); changes nothing.
+  void requireTarget(const std::string& name) const;
+
   /// Moves the staged folder `name` into the output folder. A folder of that name there (an
   /// earlier run's) is first moved into the staging folder and goes with it; anything else in
   /// the way (a file, a link) is refused. Throws Error naming the output folder's `name`.

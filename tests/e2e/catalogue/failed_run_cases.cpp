@@ -98,6 +98,26 @@ std::vector<CatalogueCase> failedRunCases() {
                           {"sim/frames/000000.png", "write failed: File too large"}, 8),
       keepsEarlierMission("SimulateForceFailingOnItsBagKeepsTheEarlierMission", "--format mcap",
                           {"sim/mission.mcap", "write failed: File too large"}, 1400),
+      // What is in the way of the move (a FIFO where its simulation.yaml goes) is refused
+      // before anything moves: the earlier mission stays whole, the FIFO a FIFO.
+      {.name = "SimulateForceOntoAFifoKeepsTheEarlierMission",
+       .prepare =
+           [](const Workspace& ws) {
+             runCliIn(ws, "simulate --scene riser --max-frames 2 --out sim");
+             for (const std::string& file : kEarlierMission) {
+               writePrevious(ws / file);
+             }
+             std::filesystem::remove(ws / "sim/simulation.yaml");
+             makeFifo(ws / "sim/simulation.yaml");
+             return std::string("simulate --scene jacket-node --max-frames 3 --force --out sim");
+           },
+       .message = {"sim/simulation.yaml: is a FIFO (named pipe): expected a regular file or a "
+                   "new path",
+                   "nothing was changed in sim"},
+       .absent = {"sim/frames/000002.png"},
+       .intact = kEarlierMission,
+       .holds = {{"sim/mission.yaml", "name: riser / vertical"}},
+       .fifos = {"sim/simulation.yaml"}},
       // One that succeeds leaves its own mission only: the earlier frames past its own and the
       // earlier bag are removed, and said so.
       {.name = "SimulateForceReplacesTheEarlierMissionWhole",
