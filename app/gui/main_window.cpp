@@ -1072,7 +1072,10 @@ void MainWindow::exportDeliverable(const DeliverableRequest& request, const QStr
     emit exportFinished(false);
     return;
   }
-  const QPointer<QProgressDialog> shown =
+  if (export_dialog_) {
+    export_dialog_->close();  // the export it showed is superseded below
+  }
+  const QPointer<QProgressDialog> shown = export_dialog_ =
       jobProgressDialog(tr("Exporting %1…").arg(QFileInfo(file).fileName()));
   const QString summary = QString::fromStdString(deliverableSummary(request));
   const int job = export_job_.start(

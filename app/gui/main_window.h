@@ -88,7 +88,8 @@ class MainWindow : public QMainWindow {
   ExportDialog* openExportDialog();
   /// Writes a deliverable of the last finished run (core/mesh/deliverable.h, as `sonarcarve-cli
   /// export`) on a worker thread, with a progress dialog that can cancel it; a failure says
-  /// which file and why, and the previous file is left intact. Emits exportFinished(ok).
+  /// which file and why, and the previous file is left intact. Emits exportFinished(ok). A new
+  /// export supersedes one still going (asked to stop; nothing of it is reported).
   void exportDeliverable(const DeliverableRequest& request, const QString& file);
   void setParams(const ReconstructionParams& params);
   void setColourBy(widgets::MapView::ColourBy by);
@@ -248,6 +249,7 @@ class MainWindow : public QMainWindow {
   BackgroundJob release_job_;
   BackgroundJob export_job_;
   QPointer<QProgressDialog> import_dialog_;
+  QPointer<QProgressDialog> export_dialog_;  // of the export going, if any
 };
 
 }  // namespace sonarcarve::gui
