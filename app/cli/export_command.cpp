@@ -7,7 +7,7 @@
 #include "io/files/output_folder.h"
 #include "io/mesh/point_cloud_ply.h"
 #include "io/run/run_manifest.h"
-#include "mesh/mesh_export.h"
+#include "mesh/deliverable.h"
 #include "pipeline/reconstruction_params.h"
 #include "sonar/mission_origin.h"
 
@@ -63,7 +63,10 @@ void addExportCommand(CLI::App& app, int& exit_code) {
   cmd->callback([o, &exit_code] {
     // The target is checked, and its folder held, before anything is read.
     const auto hold = holdOutputFile(o->out);
-    ExportOptions options;
+    DeliverableRequest request;
+    request.points = o->points;
+    request.cell_m = o->cell_m;
+    ExportOptions& options = request.options;
     options.format = o->format.empty() ? formatOfPath(o->out) : o->format;
     options.frame = o->frame;
     if (!o->origin.empty()) {
@@ -86,33 +89,25 @@ void addExportCommand(CLI::App& app, int& exit_code) {
       std::cerr << "warning: the run that wrote " << folder.string()
                 << " was cancelled: its map holds the frames carved before\n";
     }
-    const bool geotiff = options.format == "geotiff";
-    const bool points = o->points || options.format == "las" || geotiff;
+    const bool points = madeFromPoints(request);
     const std::filesystem::path input = folder / (points ? "surface_points.ply" : "mesh.ply");
     options.mission_origin_ned_m = plyOrigin(input);
     options.add_mission_origin = o->add_origin;
     options.mission_crs = plyCrs(input);
     options.target_crs = o->crs;
-    if (geotiff) {
-      SeabedGridParams grid;
-      grid.cell_m = o->cell_m;
-      grid.voxel_size_m = voxelSizeOf(folder);
-      exportSeabedGrid(readSurfacePointsPly(input), o->out, options, grid);
-    } else if (points) {
-      exportPoints(readSurfacePointsPly(input), o->out, options);
+    DeliverableSource source;
+    SurfacePoints surface;
+    Mesh mesh;
+    if (points) {
+      surface = readSurfacePointsPly(input);
+      source.points = &surface;
+      source.voxel_size_m = voxelSizeOf(folder);
     } else {
-      exportMesh(readMeshPly(input), o->out, options);
+      mesh = readMeshPly(input);
+      source.mesh = &mesh;
     }
-    const bool las = options.format == "las" || geotiff;
-    const std::string crs = !o->crs.empty()            ? o->crs
-                            : las && o->origin.empty() ? options.mission_crs
-                                                       : "";
-    std::cout << "wrote " << o->out << " (" << options.format << ", "
-              << (las ? std::string("x east, y north, z up") : options.frame + " frame") << ", "
-              << (!crs.empty()    ? "world coordinates in " + crs
-                  : o->add_origin ? "world coordinates"
-                                  : "local to the origin " + nedText(options.mission_origin_ned_m))
-              << ")\n";
+    writeDeliverable(request, source, o->out);
+    std::cout << "wrote " << o->out << " (" << deliverableSummary(request) << ")\n";
     exit_code = 0;
   });
 }

@@ -13,6 +13,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -47,7 +48,7 @@
 #include "io/frame_source.h"
 #include "io/oculus/oculus_log.h"
 #include "map_view.h"
-#include "mesh/mesh_export.h"
+#include "mesh/deliverable.h"
 #include "occlusion/surface_points.h"
 #include "params_panel.h"
 #include "pipeline/report.h"
@@ -291,10 +292,9 @@ void MainWindow::buildMenus() {
       }
     });
   };
-  add_export(tr("Surface points (PLY)…"), Export::SurfacePly, tr("PLY"), ".ply");
-  add_export(tr("Map (OctoMap .bt)…"), Export::MapBt, tr("OctoMap"), ".bt");
-  add_export(tr("Mesh (PLY)…"), Export::MeshPly, tr("PLY"), ".ply");
-  add_export(tr("Mesh (STL)…"), Export::MeshStl, tr("STL"), ".stl");
+  exports->addAction(tr("&Map: mesh, points, LAS or GeoTIFF…"), QKeySequence(tr("Ctrl+E")), this,
+                     &MainWindow::openExportDialog);
+  add_export(tr("Carved map (OctoMap .bt)…"), Export::MapBt, tr("OctoMap"), ".bt");
   add_export(tr("3D view (PNG)…"), Export::ViewPng, tr("PNG"), ".png");
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -985,14 +985,11 @@ bool MainWindow::exportTo(Export kind, const QString& file) {
           break;
         case Export::MeshPly:
         case Export::MeshStl: {
-          if (result_->mesh.triangles.empty()) {
-            throw Error(path.string(), "", "the run made no mesh (turn 'Build a mesh' on)");
-          }
-          ExportOptions options;
-          options.format = kind == Export::MeshPly ? "ply" : "stl";
-          options.mission_origin_ned_m = origin;
-          options.mission_crs = crs;
-          exportMesh(result_->mesh, path, options);
+          DeliverableRequest request;
+          request.options.format = kind == Export::MeshPly ? "ply" : "stl";
+          request.options.mission_origin_ned_m = origin;
+          request.options.mission_crs = crs;
+          writeDeliverable(request, deliverableSource(), path);
           break;
         }
         case Export::ViewPng:
@@ -1005,6 +1002,111 @@ bool MainWindow::exportTo(Export kind, const QString& file) {
   }
   log(tr("exported %1").arg(file));
   return true;
+}
+
+QPointer<QProgressDialog> MainWindow::jobProgressDialog(const QString& label) {
+  auto* dialog = new QProgressDialog(label, tr("Cancel"), 0, 100, this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->setMinimumDuration(500);
+  return dialog;
+}
+
+BackgroundJob::ProgressHandler MainWindow::progressTo(QPointer<QProgressDialog> dialog) {
+  return [dialog](const QString&, std::size_t done, std::size_t total) {
+    if (dialog) {
+      dialog->setValue(total > 0 ? static_cast<int>(100 * done / total) : 0);
+    }
+  };
+}
+
+void MainWindow::cancelJobFrom(QProgressDialog* dialog, BackgroundJob& job, int id) {
+  connect(dialog, &QProgressDialog::canceled, this, [&job, id] {
+    if (job.currentJob() == id) {
+      job.cancel();
+    }
+  });
+}
+
+DeliverableSource MainWindow::deliverableSource() const {
+  DeliverableSource source;
+  if (result_) {
+    source.mesh = &result_->mesh;
+    source.points = &result_->surface;
+    source.voxel_size_m = run_params_.carve.voxel_size_m;  // the run's (reset with result_)
+  }
+  return source;
+}
+
+ExportPlace MainWindow::exportPlace() const {
+  ExportPlace place;
+  if (mission_) {
+    place.crs = mission_->crs;
+    place.origin_ned_m = mission_->origin_ned_m;
+  }
+  place.has_mesh = result_ && !result_->mesh.triangles.empty();
+  if (mission_) {  // beside the mission folder, named after it
+    const std::filesystem::path folder =
+        std::filesystem::absolute(mission_->folder).lexically_normal();
+    const std::filesystem::path named = folder.has_filename() ? folder : folder.parent_path();
+    place.file_stem = QString::fromStdString(named.string()) + "-map";
+  }
+  return place;
+}
+
+ExportDialog* MainWindow::openExportDialog() {
+  if (!result_) {
+    showError(tr("Nothing to export"), tr("No finished reconstruction to export yet."));
+    return nullptr;
+  }
+  auto* dialog = new ExportDialog(exportPlace(), this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this,
+          [this, dialog] { exportDeliverable(dialog->request(), dialog->file()); });
+  dialog->open();
+  return dialog;
+}
+
+void MainWindow::exportDeliverable(const DeliverableRequest& request, const QString& file) {
+  if (!result_) {
+    showError(tr("Export failed"), tr("%1: no finished reconstruction to export yet").arg(file));
+    emit exportFinished(false);
+    return;
+  }
+  if (export_dialog_) {
+    export_dialog_->close();  // the export it showed is superseded below
+  }
+  const QPointer<QProgressDialog> shown = export_dialog_ =
+      jobProgressDialog(tr("Exporting %1…").arg(QFileInfo(file).fileName()));
+  const QString summary = QString::fromStdString(deliverableSummary(request));
+  const int job = export_job_.start(
+      // The result is held by the job: a run started meanwhile does not free it under it.
+      [result = result_, source = deliverableSource(), request,
+       path = std::filesystem::path(file.toStdString())](JobContext& progress) {
+        writeDeliverable(request, source, path, &progress);
+        return 0;
+      },
+      [this, shown, file, summary](int) {
+        if (shown) {
+          shown->close();
+        }
+        log(tr("exported %1 (%2)").arg(file, summary));
+        emit exportFinished(true);
+      },
+      [this, shown, file](const JobError& error) {
+        if (shown) {
+          shown->close();
+        }
+        if (error.cancelled) {
+          log(tr("export cancelled: %1 not written (a previous file is as it was)").arg(file));
+        } else {
+          showError(
+              tr("Export failed"),
+              tr("%1 was not written (a previous file is as it was): %2").arg(file, error.message));
+        }
+        emit exportFinished(false);
+      },
+      progressTo(shown));
+  cancelJobFrom(shown, export_job_, job);
 }
 
 Session MainWindow::currentSession() const {
@@ -1111,12 +1213,8 @@ void MainWindow::importWithDialog(const QString& log) {
 }
 
 void MainWindow::learnNoiseModel(const QString& empty_water, const QString& out_file) {
-  auto* dialog = new QProgressDialog(
-      tr("Learning the noise model from %1…").arg(QFileInfo(empty_water).fileName()), tr("Cancel"),
-      0, 100, this);
-  dialog->setAttribute(Qt::WA_DeleteOnClose);
-  dialog->setMinimumDuration(500);
-  const QPointer<QProgressDialog> shown(dialog);
+  const QPointer<QProgressDialog> shown = jobProgressDialog(
+      tr("Learning the noise model from %1…").arg(QFileInfo(empty_water).fileName()));
   const std::filesystem::path in = empty_water.toStdString();
   const std::filesystem::path out = out_file.toStdString();
   const int smoothing = params_panel_->params().detector.smoothing;
@@ -1152,28 +1250,16 @@ void MainWindow::learnNoiseModel(const QString& empty_water, const QString& out_
         }
         emit noiseModelLearned(false);
       },
-      [shown](const QString&, std::size_t done, std::size_t total) {
-        if (shown) {
-          shown->setValue(total > 0 ? static_cast<int>(100 * done / total) : 0);
-        }
-      });
-  connect(dialog, &QProgressDialog::canceled, this, [this, job] {
-    if (learn_job_.currentJob() == job) {
-      learn_job_.cancel();
-    }
-  });
+      progressTo(shown));
+  cancelJobFrom(shown, learn_job_, job);
 }
 
 void MainWindow::importLog(const ImportRequest& request) {
   if (import_dialog_) {
     import_dialog_->close();  // the import it showed is superseded below
   }
-  auto* dialog = new QProgressDialog(
-      tr("Importing %1…").arg(QString::fromStdString(request.log.filename().string())),
-      tr("Cancel"), 0, 100, this);
-  dialog->setAttribute(Qt::WA_DeleteOnClose);
-  dialog->setMinimumDuration(500);
-  import_dialog_ = dialog;
+  import_dialog_ = jobProgressDialog(
+      tr("Importing %1…").arg(QString::fromStdString(request.log.filename().string())));
   log(tr("importing %1 into %2")
           .arg(QString::fromStdString(request.log.string()),
                QString::fromStdString(request.out.string())));
@@ -1206,16 +1292,8 @@ void MainWindow::importLog(const ImportRequest& request) {
         }
         emit importFinished(false);
       },
-      [dialog = import_dialog_](const QString&, std::size_t done, std::size_t total) {
-        if (dialog) {
-          dialog->setValue(total > 0 ? static_cast<int>(100 * done / total) : 0);
-        }
-      });
-  connect(dialog, &QProgressDialog::canceled, this, [this, job] {
-    if (import_job_.currentJob() == job) {
-      import_job_.cancel();
-    }
-  });
+      progressTo(import_dialog_));
+  cancelJobFrom(import_dialog_, import_job_, job);
 }
 
 void MainWindow::openPath(const QString& path) {

@@ -18,6 +18,7 @@
 #include "common/thread_pool.h"
 #include "denoise/detector.h"
 #include "eval/evaluator.h"
+#include "export_dialog.h"
 #include "frame_image.h"
 #include "io/import.h"
 #include "io/mission/mission.h"
@@ -82,6 +83,14 @@ class MainWindow : public QMainWindow {
   /// Writes a deliverable of the last finished run; false (and a message) if there is none or
   /// the write failed. The previous file is left intact on failure.
   bool exportTo(Export kind, const QString& file);
+  /// Opens the export dialog for the last finished run (window-modal, returned for tests); its
+  /// Export writes the deliverable with exportDeliverable. Null, after a message, without a run.
+  ExportDialog* openExportDialog();
+  /// Writes a deliverable of the last finished run (core/mesh/deliverable.h, as `sonarcarve-cli
+  /// export`) on a worker thread, with a progress dialog that can cancel it; a failure says
+  /// which file and why, and the previous file is left intact. Emits exportFinished(ok). A new
+  /// export supersedes one still going (asked to stop; nothing of it is reported).
+  void exportDeliverable(const DeliverableRequest& request, const QString& file);
   void setParams(const ReconstructionParams& params);
   void setColourBy(widgets::MapView::ColourBy by);
   /// Colouring by error is offered only when the mission has its ground truth.
@@ -120,6 +129,7 @@ class MainWindow : public QMainWindow {
   void runFailed(const QString& message);
   void importFinished(bool ok);
   void noiseModelLearned(bool ok);
+  void exportFinished(bool ok);
   /// The last run measured against the ground truth (the accuracy panel shows it).
   void accuracyMeasured(double fscore);
 
@@ -134,6 +144,15 @@ class MainWindow : public QMainWindow {
   void buildDocks();
   void wireRunner();
   void showError(const QString& title, const QString& message);
+  /// A progress dialog for a job (0 to 100, shown after half a second, deleted when closed):
+  /// progressTo() makes the job's progress handler, cancelJobFrom() ties its Cancel to the job.
+  /// Close it when the job delivers.
+  QPointer<QProgressDialog> jobProgressDialog(const QString& label);
+  static BackgroundJob::ProgressHandler progressTo(QPointer<QProgressDialog> dialog);
+  void cancelJobFrom(QProgressDialog* dialog, BackgroundJob& job, int id);
+  /// The last run's products and the mission's place, for a deliverable.
+  DeliverableSource deliverableSource() const;
+  ExportPlace exportPlace() const;
   /// The 3D view's intensity unit: the fitted reflectance after a run with the map fit.
   void showIntensityUnit(bool fitted);
   void log(const QString& line);
@@ -228,7 +247,9 @@ class MainWindow : public QMainWindow {
   BackgroundJob learn_job_;
   BackgroundJob accuracy_job_;
   BackgroundJob release_job_;
+  BackgroundJob export_job_;
   QPointer<QProgressDialog> import_dialog_;
+  QPointer<QProgressDialog> export_dialog_;  // of the export going, if any
 };
 
 }  // namespace sonarcarve::gui

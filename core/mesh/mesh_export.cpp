@@ -8,6 +8,7 @@
 
 #include "common/error.h"
 #include "common/number_text.h"
+#include "common/progress.h"
 #include "geo/crs.h"
 #include "geo/crs_transform.h"
 #include "io/files/atomic_file.h"
@@ -81,6 +82,29 @@ class OutputFrame {
   std::optional<CrsTransform> to_target_;
 };
 
+// Reports the export's steps and stops it when asked (every kStepReport items: PROJ places a
+// few hundred thousand points a second).
+class ExportSteps {
+ public:
+  static constexpr std::size_t kStepReport = 16384;
+  ExportSteps(Progress* progress, std::size_t total) : progress_(progress), total_(total) {}
+  void at(std::size_t done) const {
+    if (progress_ && done % kStepReport == 0) {
+      check();
+      progress_->report("export", done, total_);
+    }
+  }
+  void check() const {
+    if (progress_ && progress_->cancelled()) {
+      throw Cancelled();
+    }
+  }
+
+ private:
+  Progress* progress_;
+  std::size_t total_;
+};
+
 bool insideCrop(const Eigen::Vector3f& p_local, const ExportOptions& o) {
   return !o.crop_ned_m || o.crop_ned_m->contains(p_local.cast<double>() + addedOrigin(o));
 }
@@ -126,11 +150,14 @@ Prepared preparedFor(const ExportOptions& o, const char* kind) {
 }
 
 // The mesh in the output frame, cropped; vertices no triangle uses are dropped.
-Prepared prepared(const Mesh& mesh, const ExportOptions& o) {
+Prepared prepared(const Mesh& mesh, const ExportOptions& o, Progress* progress) {
   Prepared out = preparedFor(o, "mesh");
   const OutputFrame frame(o);
+  const ExportSteps steps(progress, mesh.triangles.size());
   std::vector<std::int64_t> remap(mesh.vertices.size(), -1);
-  for (const auto& t : mesh.triangles) {
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    steps.at(i);
+    const auto& t = mesh.triangles[i];
     if (!insideCrop(mesh.vertices[t[0]], o) || !insideCrop(mesh.vertices[t[1]], o) ||
         !insideCrop(mesh.vertices[t[2]], o)) {
       continue;
@@ -152,10 +179,13 @@ Prepared prepared(const Mesh& mesh, const ExportOptions& o) {
   return out;
 }
 
-Prepared prepared(const SurfacePoints& points, const ExportOptions& o) {
+Prepared prepared(const SurfacePoints& points, const ExportOptions& o, Progress* progress) {
   Prepared out = preparedFor(o, "points");
   const OutputFrame frame(o);
-  for (const SurfacePoint& p : points) {
+  const ExportSteps steps(progress, points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    steps.at(i);
+    const SurfacePoint& p = points[i];
     if (insideCrop(p.position_m, o)) {
       out.positions.push_back(frame.position(p.position_m));
       out.intensity.push_back(p.intensity);
@@ -349,8 +379,8 @@ Prepared requirePoints(Prepared m, const std::filesystem::path& path) {
 }
 
 std::string lasFileBytes(const SurfacePoints& points, const std::filesystem::path& path,
-                         const ExportOptions& o) {
-  const Prepared m = requirePoints(prepared(points, o), path);
+                         const ExportOptions& o, Progress* progress) {
+  const Prepared m = requirePoints(prepared(points, o, progress), path);
   LasCloud cloud;
   if (!o.target_crs.empty()) {
     cloud.crs_wkt = crsWkt(o.target_crs, "export", "crs");
@@ -422,16 +452,18 @@ std::string formatOfPath(const std::filesystem::path& path) {
   throw Error(path.string(), "", "unknown file type: expected .ply, .stl, .obj, .las or .tif");
 }
 
-void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const ExportOptions& options) {
+void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const ExportOptions& options,
+                Progress* progress) {
   options.validate();
   if (options.format == "las" || options.format == "geotiff") {
     throw Error(path.string(), "",
                 options.format + " is made from points: expected the surface points (--points)");
   }
-  const Prepared m = prepared(mesh, options);
+  const Prepared m = prepared(mesh, options, progress);
   if (m.triangles.empty()) {
     throw Error(path.string(), "", "no triangle to export (empty mesh or crop box)");
   }
+  ExportSteps(progress, 0).check();
   if (options.format == "stl") {
     writeFileAtomically(path, stlBytes(m));
   } else if (options.format == "obj") {
@@ -442,27 +474,32 @@ void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const Expor
 }
 
 void exportPoints(const SurfacePoints& points, const std::filesystem::path& path,
-                  const ExportOptions& options) {
+                  const ExportOptions& options, Progress* progress) {
   options.validate();
+  std::string bytes;
   if (options.format == "las") {
     const ExportOptions las = zUpOptions(options);
     las.validate();
-    writeFileAtomically(path, lasFileBytes(points, path, las));
-    return;
-  }
-  if (options.format != "ply" && options.format != "ply-ascii") {
+    bytes = lasFileBytes(points, path, las, progress);
+  } else if (options.format == "ply" || options.format == "ply-ascii") {
+    bytes = plyText(requirePoints(prepared(points, options, progress), path),
+                    options.format == "ply-ascii");
+  } else {
     throw Error(path.string(), "", "points are exported as PLY or LAS only");
   }
-  writeFileAtomically(
-      path, plyText(requirePoints(prepared(points, options), path), options.format == "ply-ascii"));
+  ExportSteps(progress, 0).check();
+  writeFileAtomically(path, bytes);
 }
 
 void exportSeabedGrid(const SurfacePoints& points, const std::filesystem::path& path,
-                      const ExportOptions& options, const SeabedGridParams& grid) {
+                      const ExportOptions& options, const SeabedGridParams& grid,
+                      Progress* progress) {
   options.validate();
   const ExportOptions o = zUpOptions(options);
   o.validate();
-  HeightRaster raster = seabedGrid(requirePoints(prepared(points, o), path).positions, grid);
+  HeightRaster raster =
+      seabedGrid(requirePoints(prepared(points, o, progress), path).positions, grid);
+  ExportSteps(progress, 0).check();
   if (!o.target_crs.empty()) {
     raster.crs_wkt = crsWkt(o.target_crs, "export", "crs");
   }

@@ -22,7 +22,8 @@
 // projected CRS through PROJ: x easting, y northing, z up (= -depth), in double (PLY, OBJ;
 // STL refused), with that CRS and the mission origin in header comments (docs/formats.md,
 // "Georeferenced export"). Every file is written to a temporary name and renamed: a failure
-// keeps the previous file.
+// keeps the previous file. An optional Progress gets the points or triangles placed (stage
+// "export") and stops the export before anything is written when cancelled (Cancelled).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -35,6 +36,8 @@
 #include "occlusion/surface_points.h"
 
 namespace sonarcarve {
+
+class Progress;
 
 struct ExportOptions {
   std::string format = "ply";  ///< ply | ply-ascii | stl | obj | las, geotiff (points)
@@ -55,15 +58,17 @@ struct ExportOptions {
 /// The format a file name asks for (.ply, .stl, .obj, .las, .tif/.tiff), or throws Error.
 std::string formatOfPath(const std::filesystem::path& path);
 
-void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const ExportOptions& options);
+void exportMesh(const Mesh& mesh, const std::filesystem::path& path, const ExportOptions& options,
+                Progress* progress = nullptr);
 /// Points as PLY (ply or ply-ascii) with intensity and views, or LAS (intensity rounded to
 /// 16 bits, views in user data up to 255); other formats refused.
 void exportPoints(const SurfacePoints& points, const std::filesystem::path& path,
-                  const ExportOptions& options);
+                  const ExportOptions& options, Progress* progress = nullptr);
 /// The seabed's elevation grid (mesh/seabed_grid.h) of the points as GeoTIFF (format
 /// geotiff), x east(ing), y north(ing) as for LAS, with the CRS when there is one.
 void exportSeabedGrid(const SurfacePoints& points, const std::filesystem::path& path,
-                      const ExportOptions& options, const SeabedGridParams& grid);
+                      const ExportOptions& options, const SeabedGridParams& grid,
+                      Progress* progress = nullptr);
 /// Reads a mesh written by exportMesh in PLY (any frame; no conversion back).
 Mesh readMeshPly(const std::filesystem::path& path);
 

@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/progress.h"
+#include "mesh/deliverable.h"
 #include "mesh/mesh_export.h"
 #include "mesh/surface_mesher.h"
 #include "support/test_support.h"
@@ -99,6 +101,52 @@ TEST(MeshExport, AFailedExportKeepsThePreviousFile) {
   EXPECT_THROW(exportMesh(oneTriangle(), dir.path() / "x.dwg", bad), Error);
   EXPECT_THROW(formatOfPath("mesh.dxf"), Error);
   EXPECT_EQ(formatOfPath("MESH.STL"), "stl");
+}
+
+// The workbench's Cancel: the export stops before it writes, the previous file as it was.
+TEST(MeshExport, ACancelledExportWritesNothing) {
+  test::ScratchDir dir;
+  const auto path = dir.path() / "points.las";
+  test::writeText(path, "the previous deliverable\n");
+  ExportOptions las;
+  las.format = "las";
+  SilentProgress progress;
+  progress.cancel();
+  EXPECT_THROW(exportPoints(spherePoints(), path, las, &progress), Cancelled);
+  EXPECT_THROW(exportMesh(oneTriangle(), dir.path() / "m.ply", ExportOptions{}, &progress),
+               Cancelled);
+  EXPECT_EQ(test::readText(path), "the previous deliverable\n");
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "m.ply"));
+}
+
+// One request, the CLI's or the workbench's: the product it is made of, and what it says.
+TEST(Deliverable, MadeOfTheProductItsFormatNeeds) {
+  test::ScratchDir dir;
+  DeliverableRequest request;
+  request.options.format = "obj";
+  EXPECT_FALSE(madeFromPoints(request));
+  const Mesh mesh = oneTriangle();
+  const SurfacePoints points = spherePoints();
+  try {
+    writeDeliverable(request, DeliverableSource{nullptr, &points}, dir.path() / "m.obj");
+    ADD_FAILURE() << "a mesh deliverable without a mesh was written";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.source(), (dir.path() / "m.obj").string());
+    EXPECT_NE(e.message().find("no mesh"), std::string::npos) << e.what();
+  }
+  writeDeliverable(request, DeliverableSource{&mesh, nullptr}, dir.path() / "m.obj");
+  EXPECT_NE(test::readText(dir.path() / "m.obj").find("\nf 1//1 2//2 3//3\n"), std::string::npos);
+  EXPECT_EQ(deliverableSummary(request), "obj, ned frame, local to the origin 0 0 0");
+  request.options.format = "las";
+  request.options.mission_crs = "EPSG:32631";
+  EXPECT_TRUE(madeFromPoints(request));
+  EXPECT_EQ(deliverableSummary(request),
+            "las, x east, y north, z up, world coordinates in EPSG:32631");
+  request.options.format = "ply";
+  request.points = true;
+  request.options.add_mission_origin = true;
+  EXPECT_TRUE(madeFromPoints(request));
+  EXPECT_EQ(deliverableSummary(request), "ply, ned frame, world coordinates");
 }
 
 }  // namespace
