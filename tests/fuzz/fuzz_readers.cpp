@@ -116,6 +116,9 @@ void decodeBag(const RosBag& bag) {
         case RosMessageKind::GeoFix:
           decodeNavSatFix(bytes, source, m.place);
           break;
+        case RosMessageKind::GeoOrigin:
+          decodeGeoPoint(type, bytes, source, m.place);
+          break;
         case RosMessageKind::Other:
           decodeRosHeader(bytes, source, m.place);
           break;
