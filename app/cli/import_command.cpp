@@ -72,11 +72,13 @@ void addImportCommand(CLI::App& app, int& exit_code) {
                                  "Import a vendor sonar log or a ROS 2 bag into a mission folder");
   auto o = std::make_shared<Options>();
   cmd->add_option("--format", o->format,
-                  "auto: by content (Oculus logs, ARIS recordings, ROS 2 bags); oculus")
+                  "auto: by content (Oculus logs, ARIS recordings, ROS 2 bags, HoloOcean / NeuSIS "
+                  "datasets); oculus")
       ->capture_default_str();
   cmd->add_option("log", o->log,
                   "The log: Oculus messages or an Oculus ViewPoint .oculus file, an ARIS "
-                  "recording, a ROS 2 bag (.mcap, .db3 or its folder)")
+                  "recording, a ROS 2 bag (.mcap, .db3 or its folder), a HoloOcean / NeuSIS "
+                  "dataset folder (Config.json and Data/*.pkl)")
       ->required();
   cmd->add_option("--out", o->out, "Mission folder to create (new or empty)")->required();
   cmd->add_option("--name", o->name, "Mission name (default: the log's file name)");

@@ -64,6 +64,10 @@ void addSourceFlags(CLI::App& cmd, SourceFlags& flags) {
   cmd.add_option("--fix-topic", flags.fix_topic,
                  "ROS 2 bag: the sensor_msgs/NavSatFix topic whose WGS84 fixes are the "
                  "vehicle's positions (default: the only one, if any)");
+  cmd.add_option("--origin-topic", flags.origin_topic,
+                 "ROS 2 bag: the geographic_msgs/GeoPoint or GeoPointStamped topic whose first "
+                 "WGS84 point is the mission origin, as mission.yaml's origin (default: the "
+                 "only one, if any)");
   cmd.add_option("--sonar-axes", flags.sonar_axes,
                  "ROS 2 bag: frame of the beam directions: z-forward (the message comment: Z "
                  "forward, X up), x-forward (X forward, Y left, as some simulators), frd (X "
@@ -97,6 +101,7 @@ OpenOptions openOptionsFrom(const SourceFlags& flags) {
   options.bag.sonar_topic = flags.sonar_topic;
   options.bag.nav_topic = flags.nav_topic;
   options.bag.fix_topic = flags.fix_topic;
+  options.bag.origin_topic = flags.origin_topic;
   options.bag.axes = enumFromString<SonarAxes>(flags.sonar_axes).value_or(SonarAxes::Auto);
   options.bag.layout =
       enumFromString<ImageLayout>(flags.image_layout).value_or(ImageLayout::RangeMajor);

@@ -17,8 +17,8 @@ struct SourceFlags {
   std::vector<std::string> nav_columns, nav_settings;
   double time_offset_s = 0.0;
   double aperture_deg = 0.0;
-  std::string beam_pattern;                       ///< "", "sinc" or "clipped"
-  std::string sonar_topic, nav_topic, fix_topic;  ///< ROS 2 bags
+  std::string beam_pattern;                                     ///< "", "sinc" or "clipped"
+  std::string sonar_topic, nav_topic, fix_topic, origin_topic;  ///< ROS 2 bags
   std::string sonar_axes = "auto", image_layout = "range-major", time_source = "header";
 };
 

@@ -2,7 +2,7 @@
 # Proves that includes only point down (docs/architecture.md, "Layers"): app -> widgets -> core,
 # and inside core from a module to modules of a lower layer only. Modules of one layer are
 # siblings: neither includes the other. Inside io/, io/files/ (plain file utilities) includes
-# no other io/ folder, and io/mesh/ and io/run/ include only io/files/.
+# no other io/ folder, and io/mesh/, io/run/ and io/pickle/ include only io/files/.
 #   include_layers.sh ROOT
 set -euo pipefail
 cd "$1"
@@ -50,7 +50,7 @@ while IFS= read -r -d '' file; do
         [ "$sub_to" = "$rest" ] && sub_to=""  # a header at io/'s root
         case "$sub_from" in
           files) [ "$sub_to" = files ] || fail "$file includes io/$rest: io/files/ is the lowest" ;;
-          mesh | run)
+          mesh | run | pickle)
             [ "$sub_to" = "$sub_from" ] || [ "$sub_to" = files ] ||
               fail "$file includes io/$rest: io/$sub_from/ includes only io/files/"
             ;;

@@ -114,12 +114,8 @@ class BagNavSatFix : public ::testing::Test {
   }
 
   static double fscore(const std::string& run) {
-    const auto eval =
-        runCli("evaluate --reference " + quoted(path("truth_world.ply")) + " --visible " +
-               quoted(path("visible_world.ply")) + " --reconstruction " +
-               quoted(path(run) / "surface_points.ply") + " --json");
-    EXPECT_EQ(eval.exit_code, 0) << eval.output;
-    return nlohmann::json::parse(eval.output.substr(eval.output.find('{')))["fscore"];
+    return test::evaluatedFscore(path("truth_world.ply"), path("visible_world.ply"),
+                                 path(run) / "surface_points.ply");
   }
 
   static test::ScratchDir* dir_;

@@ -40,12 +40,9 @@ TEST(MapFitRun, ExplainsMoreOfTheFramesAndKeepsTheSurfaceWithinTheVoxels) {
   }
   EXPECT_TRUE(found);
 
-  const test::RunResult scored =
-      runCli("evaluate --reference " + quoted(mission / "ground_truth.ply") + " --visible " +
-             quoted(mission / "visible_points.ply") + " --reconstruction " +
-             quoted(out / "surface_points.ply") + " --json");
-  ASSERT_EQ(scored.exit_code, 0) << scored.output;
-  const nlohmann::json score = nlohmann::json::parse(scored.output);
+  const nlohmann::json score = test::evaluateRun(
+      mission / "ground_truth.ply", mission / "visible_points.ply", out / "surface_points.ply");
+  ASSERT_FALSE(score.contains("error")) << score.dump();
   EXPECT_GT(score.at("reconstructed_points").get<double>(), 0.0);
   // Half a voxel at the median, the 3 cm at the 90th percentile.
   EXPECT_LT(score.at("accuracy_median_m").get<double>(), 0.5 * kVoxel_m);

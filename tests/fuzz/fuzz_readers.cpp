@@ -13,11 +13,13 @@
 #include "geometry/scene_io.h"
 #include "io/aris/aris_file.h"
 #include "io/files/frame_png.h"
+#include "io/holoocean/holoocean_frame_file.h"
 #include "io/mesh/ply_check.h"
 #include "io/mesh/point_cloud_ply.h"
 #include "io/mission/mission.h"
 #include "io/mission/nav_import.h"
 #include "io/oculus/oculus_log.h"
+#include "io/pickle/pickle_reader.h"
 #include "io/rosbag/bag_oculus.h"
 #include "io/rosbag/bag_sonar.h"
 #include "io/rosbag/ros_bag.h"
@@ -113,6 +115,9 @@ void decodeBag(const RosBag& bag) {
           break;
         case RosMessageKind::GeoFix:
           decodeNavSatFix(bytes, source, m.place);
+          break;
+        case RosMessageKind::GeoOrigin:
+          decodeGeoPoint(type, bytes, source, m.place);
           break;
         case RosMessageKind::Other:
           decodeRosHeader(bytes, source, m.place);
@@ -223,6 +228,17 @@ void sessionFile(std::span<const std::uint8_t> bytes) {
   acceptingErrors([&] { loadSession(path); });
 }
 
+void holoOceanPickle(std::span<const std::uint8_t> bytes) {
+  acceptingErrors([&] {
+    const pickle::ValuePtr state = pickle::decodePickle(text(bytes), "fuzz.pkl");
+    acceptingErrors([&] { holoOceanPose(*state, "PoseSensor", "fuzz.pkl"); });
+    acceptingErrors([&] {
+      const auto [rows, cols] = holoOceanImageSize(*state, "ImagingSonar", "fuzz.pkl");
+      holoOceanImage(*state, "ImagingSonar", rows, cols, "fuzz.pkl");
+    });
+  });
+}
+
 void referenceMesh(std::span<const std::uint8_t> bytes) {
   for (const char* name : {"mesh.stl", "mesh.obj", "mesh.ply"}) {
     const auto path = scratch() / name;
@@ -236,7 +252,8 @@ const std::vector<Target>& targets() {
       {"oculus", oculusLog},       {"mission", mission},      {"frame_png", framePng},
       {"ply", plyPointCloud},      {"nav_import", navImport}, {"params_yaml", paramsYaml},
       {"noise_model", noiseModel}, {"mesh", referenceMesh},   {"session", sessionFile},
-      {"aris", arisFile},          {"mcap", mcapBag},         {"db3", sqliteBag}};
+      {"aris", arisFile},          {"mcap", mcapBag},         {"db3", sqliteBag},
+      {"pickle", holoOceanPickle}};
   return all;
 }
 

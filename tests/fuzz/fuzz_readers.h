@@ -39,6 +39,8 @@ void arisFile(std::span<const std::uint8_t> bytes);
 void mcapBag(std::span<const std::uint8_t> bytes);
 /// A ROS 2 bag in SQLite3 storage (.db3): openSqliteBag, then the same decoding.
 void sqliteBag(std::span<const std::uint8_t> bytes);
+/// A HoloOcean / NeuSIS frame's pickle: decodePickle, then its PoseSensor and ImagingSonar.
+void holoOceanPickle(std::span<const std::uint8_t> bytes);
 /// A workbench session file (loadSession: YAML with the parameters embedded).
 void sessionFile(std::span<const std::uint8_t> bytes);
 

@@ -1,6 +1,7 @@
 #include "support/cli_runner.h"
 
 #include <fstream>
+#include <limits>
 
 #include <sys/wait.h>
 #include <array>
@@ -29,6 +30,26 @@ RunResult runShell(const std::string& command) {
 
 std::string quoted(const std::filesystem::path& path) {
   return "'" + path.string() + "'";
+}
+
+nlohmann::json evaluateRun(const std::filesystem::path& reference,
+                           const std::filesystem::path& visible,
+                           const std::filesystem::path& reconstruction) {
+  const RunResult run =
+      runCli("evaluate --reference " + quoted(reference) + " --visible " + quoted(visible) +
+             " --reconstruction " + quoted(reconstruction) + " --json");
+  const std::size_t json = run.output.find('{');
+  if (run.exit_code != 0 || json == std::string::npos) {
+    return {{"error", run.output}};
+  }
+  return nlohmann::json::parse(run.output.substr(json));
+}
+
+double evaluatedFscore(const std::filesystem::path& reference, const std::filesystem::path& visible,
+                       const std::filesystem::path& reconstruction) {
+  const nlohmann::json score = evaluateRun(reference, visible, reconstruction);
+  return score.contains("fscore") ? score["fscore"].get<double>()
+                                  : std::numeric_limits<double>::quiet_NaN();
 }
 
 nlohmann::json readJsonFile(const std::filesystem::path& path) {

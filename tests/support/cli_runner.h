@@ -18,6 +18,14 @@ RunResult runCli(const std::string& args);
 RunResult runShell(const std::string& command);
 /// A JSON file a run wrote (report.json, manifest.json), parsed.
 nlohmann::json readJsonFile(const std::filesystem::path& path);
+/// The scores of `evaluate --json` for a reconstruction's points against a reference mesh and
+/// its visible points; {"error": what evaluate printed} if it failed.
+nlohmann::json evaluateRun(const std::filesystem::path& reference,
+                           const std::filesystem::path& visible,
+                           const std::filesystem::path& reconstruction);
+/// Its F-score; NaN (which fails every comparison) if evaluate failed.
+double evaluatedFscore(const std::filesystem::path& reference, const std::filesystem::path& visible,
+                       const std::filesystem::path& reconstruction);
 /// A path quoted for the shell.
 std::string quoted(const std::filesystem::path& path);
 

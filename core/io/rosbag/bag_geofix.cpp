@@ -10,13 +10,45 @@
 namespace sonarcarve {
 namespace {
 
-bool onTheEarth(const NavSatFixMsg& f) {
+// NavSatFix or GeoPoint: finite, latitude within 90 degrees, longitude within 180.
+template <typename Message>
+bool onTheEarth(const Message& f) {
   return std::isfinite(f.latitude_deg) && std::isfinite(f.longitude_deg) &&
          std::isfinite(f.altitude_m) && std::abs(f.latitude_deg) <= 90.0 &&
          std::abs(f.longitude_deg) <= 180.0;
 }
 
 }  // namespace
+
+BagGeoOrigin bagGeoOrigin(const GeoPointMsg& point, const std::string& grid_crs,
+                          const std::string& source, const std::string& place) {
+  if (!onTheEarth(point)) {
+    throw Error(source, place,
+                "latitude " + std::to_string(point.latitude_deg) + ", longitude " +
+                    std::to_string(point.longitude_deg) + ", altitude " +
+                    std::to_string(point.altitude_m) +
+                    ": expected finite WGS84 degrees within -90..90 and -180..180 and metres");
+  }
+  BagGeoOrigin origin;
+  origin.crs = grid_crs.empty() ? utmZoneCrs(point.latitude_deg, point.longitude_deg) : grid_crs;
+  const GridProjection grid(kWgs84Crs, origin.crs, source, place);
+  const GridProjection::GridPoint p =
+      grid.place(point.longitude_deg, point.latitude_deg, source, place);
+  origin.ned_m = {p.north_m, p.east_m, -point.altitude_m};
+  origin.true_north_bearing_rad = p.true_north_bearing_rad;
+  return origin;
+}
+
+NavTrack trackTurnedToGrid(const NavTrack& track, double true_north_bearing_rad) {
+  const Eigen::Quaterniond turn(
+      Eigen::AngleAxisd(true_north_bearing_rad, Eigen::Vector3d::UnitZ()));
+  std::vector<NavSample> samples = track.samples();
+  for (NavSample& s : samples) {
+    s.position_m = turn * s.position_m;
+    s.q_world_vehicle = turn * s.q_world_vehicle;
+  }
+  return NavTrack(std::move(samples));
+}
 
 std::string leftOutFixes(const BagGeoNavigation& nav) {
   std::string text;

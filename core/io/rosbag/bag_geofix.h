@@ -39,6 +39,23 @@ BagGeoNavigation bagGeoNavigation(std::vector<TimedFix> fixes,
                                   const std::string& grid_crs, const std::string& source,
                                   const std::string& topic);
 
+/// The mission origin a geographic_msgs GeoPoint gives (docs/formats.md, "Geodetic
+/// positions"): its WGS84 latitude and longitude on the grid of `grid_crs` (empty: the point's
+/// own UTM zone), down = -altitude, and true north's bearing from grid north there.
+struct BagGeoOrigin {
+  Eigen::Vector3d ned_m = Eigen::Vector3d::Zero();
+  std::string crs;
+  double true_north_bearing_rad = 0.0;
+};
+/// Throws Error naming `source` and `place` for a point not finite or off the Earth.
+BagGeoOrigin bagGeoOrigin(const GeoPointMsg& point, const std::string& grid_crs,
+                          const std::string& source, const std::string& place);
+
+/// A track local to an origin in a frame aligned with true north (as an odometry frame whose
+/// datum is a GeoPoint) turned about the origin onto the grid: positions and attitudes
+/// rotated by `true_north_bearing_rad` about down.
+NavTrack trackTurnedToGrid(const NavTrack& track, double true_north_bearing_rad);
+
 /// "12 no fix, 1 not finite": the fixes left out, for a warning; empty when none was.
 std::string leftOutFixes(const BagGeoNavigation& nav);
 

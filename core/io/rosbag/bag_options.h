@@ -52,6 +52,9 @@ struct BagOptions {
   std::string sonar_topic;  ///< empty: the only sonar image or raw Oculus ping topic
   std::string nav_topic;    ///< empty: the only Odometry / PoseStamped topic
   std::string fix_topic;    ///< empty: the only sensor_msgs/NavSatFix topic, if any
+  /// empty: the only geographic_msgs/GeoPoint or GeoPointStamped topic, if any: the mission
+  /// origin
+  std::string origin_topic;
   SonarAxes axes = SonarAxes::Auto;
   ImageLayout layout = ImageLayout::RangeMajor;
   BagTime time = BagTime::Header;

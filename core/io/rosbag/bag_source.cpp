@@ -63,6 +63,8 @@ std::string kindName(RosMessageKind kind) {
       return "transforms";
     case RosMessageKind::GeoFix:
       return "position fix (sensor_msgs/NavSatFix)";
+    case RosMessageKind::GeoOrigin:
+      return "origin (geographic_msgs/GeoPoint or GeoPointStamped)";
     case RosMessageKind::Other:
       break;
   }
@@ -84,6 +86,8 @@ std::string expectedOf(RosMessageKind kind) {
       return kTfMessageType;
     case RosMessageKind::GeoFix:
       return kNavSatFixType;
+    case RosMessageKind::GeoOrigin:
+      return "geographic_msgs/msg/GeoPoint or geographic_msgs/msg/GeoPointStamped";
     case RosMessageKind::Other:
       break;
   }
@@ -317,6 +321,45 @@ void placeOnFixes(Mission& mission, const RosBag& bag, std::size_t topic,
   }
 }
 
+// The mission origin from the origin topic's first GeoPoint, as mission.yaml's origin: on the
+// grid of the fixes when the bag has them (their track moved to it), else on the point's UTM
+// zone, the pose topic's track taken as local to it in a frame aligned with true north (an
+// odometry whose datum is the point) and turned to grid north.
+void placeAtGeoOrigin(Mission& mission, const RosBag& bag, std::size_t topic, bool on_fixes,
+                      std::vector<std::string>& problems, std::vector<std::string>& contents) {
+  requireCdr(bag, topic);
+  const std::string source = bag.path().string();
+  const BagTopic& t = bag.topics()[topic];
+  std::optional<GeoPointMsg> first;
+  std::string place;
+  std::size_t count = 0;
+  forEachMessage(bag, topic, problems, [&](std::size_t, const BagMessage& m, const auto& bytes) {
+    ++count;
+    if (!first) {
+      first = decodeGeoPoint(t.type, bytes, source, m.place);
+      place = m.place;
+    }
+  });
+  if (!first) {
+    throw Error(source, "topic " + t.name,
+                "no message: expected a " + expectedOf(RosMessageKind::GeoOrigin) +
+                    " (the mission origin; --origin-topic)");
+  }
+  const BagGeoOrigin origin =
+      bagGeoOrigin(*first, on_fixes ? mission.crs : "", source, "topic " + t.name + ", " + place);
+  if (on_fixes) {
+    mission.nav = translatedTrack(mission.nav, mission.origin_ned_m - origin.ned_m);
+  } else {
+    mission.nav = trackTurnedToGrid(mission.nav, origin.true_north_bearing_rad);
+    mission.crs = origin.crs;
+  }
+  mission.origin_ned_m = origin.ned_m;
+  contents.push_back(
+      "origin topic " + t.name + " (" + t.type + "): the first of " + std::to_string(count) +
+      " points, on the grid of " + mission.crs +
+      (on_fixes ? "" : "; the navigation local to it, turned from true to grid north"));
+}
+
 Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
   std::shared_ptr<const RosBag> bag = openRosBag(path);
   const std::string source = path.string();
@@ -374,6 +417,11 @@ Mission openBag(const std::filesystem::path& path, const OpenOptions& options) {
       mission.warnings.push_back(
           "no navigation topic in the bag and no --nav: the vehicle is stationary at the origin "
           "with zero attitude");
+    }
+    const auto origin_topic = chooseTopic(*bag, kinds, RosMessageKind::GeoOrigin,
+                                          options.bag.origin_topic, "--origin-topic");
+    if (origin_topic) {
+      placeAtGeoOrigin(mission, *bag, *origin_topic, fix_topic.has_value(), problems, contents);
     }
   }
   const auto mounting = bagMounting(staticTransforms(*bag, problems), body_frame, body_frd,

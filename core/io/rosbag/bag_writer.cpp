@@ -13,6 +13,7 @@
 #include "geo/crs_transform.h"
 #include "geo/grid_projection.h"
 #include "io/files/atomic_file.h"
+#include "io/rosbag/bag_geofix.h"
 #include "io/rosbag/mcap_writer.h"
 #include "io/rosbag/ros_frames.h"
 
@@ -124,6 +125,16 @@ class GeoFixWriter {
     return fix;
   }
 
+  /// The mission origin (the local zero) in WGS84, and true north's bearing from grid north
+  /// there.
+  std::pair<GeoPointMsg, double> origin() const {
+    NavSample zero;
+    const NavSatFixMsg fix = fixOf(zero);  // turns zero's attitude by minus the bearing
+    const Eigen::AngleAxisd turn(zero.q_world_vehicle);
+    return {{{}, fix.latitude_deg, fix.longitude_deg, fix.altitude_m},
+            -turn.angle() * turn.axis().z()};
+  }
+
  private:
   static const std::string& requireCrs(const Mission& mission) {
     if (mission.crs.empty()) {
@@ -161,7 +172,18 @@ std::vector<BagMessageSpec> bagMessages(const Mission& mission, const BagWriteOp
   if (!options.fix_topic.empty()) {
     fixes.emplace(mission);
   }
-  for (const NavSample& sample : mission.nav.samples()) {
+  NavTrack nav = mission.nav;
+  if (!options.origin_topic.empty()) {
+    auto [origin, bearing] = GeoFixWriter(mission).origin();
+    origin.header = {nanoseconds(nav.samples().front().time_s), "map"};
+    const std::uint16_t topic = fixes ? 4 : 3;
+    out.push_back(
+        {origin.header.stamp_ns, {topic, origin.header.stamp_ns, encodeGeoPointStamped(origin)}});
+    if (!fixes) {  // the odometry in a frame aligned with true north about the origin
+      nav = trackTurnedToGrid(nav, -bearing);
+    }
+  }
+  for (const NavSample& sample : nav.samples()) {
     NavSample s = sample;
     if (fixes) {
       NavSatFixMsg fix = fixes->fixOf(s);  // turns s's attitude to true north
@@ -202,6 +224,9 @@ std::vector<BagTopicSpec> topicsOf(const BagWriteOptions& options) {
                                    {"/tf_static", kTfMessageType, ""}};
   if (!options.fix_topic.empty()) {
     topics.push_back({options.fix_topic, kNavSatFixType, ""});
+  }
+  if (!options.origin_topic.empty()) {
+    topics.push_back({options.origin_topic, kGeoPointStampedType, ""});
   }
   for (BagTopicSpec& t : topics) {
     t.definition = rosMessageDefinition(t.type);

@@ -1,6 +1,7 @@
 // Writing a mission as a ROS 2 bag: sonar frames as marine_acoustic_msgs/ProjectedSonarImage,
 // the navigation as nav_msgs/Odometry (world ENU "map", body FLU "base_link", REP-103; local
-// to the mission origin), optionally its positions as sensor_msgs/NavSatFix too, and the
+// to the mission origin), optionally its positions as sensor_msgs/NavSatFix too and its origin
+// as geographic_msgs/GeoPointStamped, and the
 // mounting as one tf2_msgs/TFMessage on /tf_static. For tests and for `simulate --format`:
 // a bag of a simulated mission, with its ground truth beside it, read back by our reader
 // (io/rosbag/ros_bag.h) or by ROS tools. MCAP files are written without a summary section (readers
@@ -49,6 +50,11 @@ struct BagWriteOptions {
   /// Odometry's attitude from true north (grid north turned back by the grid convergence), as
   /// a vehicle's fix and INS give them. Needs a mission with a CRS.
   std::string fix_topic;
+  /// Not empty: the mission origin as a geographic_msgs/GeoPointStamped on this topic (WGS84,
+  /// altitude = -down) and, without fix_topic, the Odometry local to it in a frame aligned with
+  /// true north (turned from grid north by the convergence at the origin), as a vehicle whose
+  /// odometry has that point as its datum writes it. Needs a mission with a CRS.
+  std::string origin_topic;
   std::string sonar_frame = "sonar";
   std::size_t chunk_bytes = std::size_t{4} << 20;
 };

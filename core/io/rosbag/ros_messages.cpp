@@ -43,6 +43,8 @@ const std::map<std::string, std::string>& fieldLists() {
        "uint8 COVARIANCE_TYPE_UNKNOWN = 0\nuint8 COVARIANCE_TYPE_APPROXIMATED = 1\n"
        "uint8 COVARIANCE_TYPE_DIAGONAL_KNOWN = 2\nuint8 COVARIANCE_TYPE_KNOWN = 3\n"
        "uint8 position_covariance_type\n"},
+      {"geographic_msgs/GeoPoint", "float64 latitude\nfloat64 longitude\nfloat64 altitude\n"},
+      {"geographic_msgs/GeoPointStamped", "std_msgs/Header header\nGeoPoint position\n"},
       {"sensor_msgs/NavSatStatus",
        "int8 STATUS_NO_FIX = -1\nint8 STATUS_FIX = 0\nint8 STATUS_SBAS_FIX = 1\n"
        "int8 STATUS_GBAS_FIX = 2\nint8 status\nuint16 SERVICE_GPS = 1\n"
@@ -64,6 +66,8 @@ const std::map<std::string, std::vector<std::string>>& dependencies() {
         "geometry_msgs/TwistWithCovariance", "geometry_msgs/Twist", "geometry_msgs/Vector3"}},
       {"sensor_msgs/NavSatFix",
        {"std_msgs/Header", "builtin_interfaces/Time", "sensor_msgs/NavSatStatus"}},
+      {"geographic_msgs/GeoPointStamped",
+       {"std_msgs/Header", "builtin_interfaces/Time", "geographic_msgs/GeoPoint"}},
       {"tf2_msgs/TFMessage",
        {"geometry_msgs/TransformStamped", "std_msgs/Header", "builtin_interfaces/Time",
         "geometry_msgs/Transform", "geometry_msgs/Vector3", "geometry_msgs/Quaternion"}},
@@ -147,6 +151,13 @@ void writeQuaternion(CdrWriter& out, const Eigen::Quaterniond& q) {
   out.write(q.w());
 }
 
+// latitude, longitude, altitude: NavSatFix's and GeoPoint's.
+void writeLatLonAlt(CdrWriter& out, double latitude, double longitude, double altitude) {
+  out.write(latitude);
+  out.write(longitude);
+  out.write(altitude);
+}
+
 void writeZeros(CdrWriter& out, int count) {
   for (int i = 0; i < count; ++i) {
     out.write(0.0);
@@ -174,6 +185,9 @@ RosMessageKind rosMessageKind(std::string_view type) {
   }
   if (t == "sensor_msgs/NavSatFix") {
     return RosMessageKind::GeoFix;
+  }
+  if (t == "geographic_msgs/GeoPoint" || t == "geographic_msgs/GeoPointStamped") {
+    return RosMessageKind::GeoOrigin;
   }
   return RosMessageKind::Other;
 }
@@ -312,6 +326,19 @@ NavSatFixMsg decodeNavSatFix(std::span<const std::uint8_t> cdr, const std::strin
   return msg;
 }
 
+GeoPointMsg decodeGeoPoint(std::string_view type, std::span<const std::uint8_t> cdr,
+                           const std::string& source, const std::string& place) {
+  CdrReader in(cdr, source, place);
+  GeoPointMsg msg;
+  if (shortType(type) == "geographic_msgs/GeoPointStamped") {
+    msg.header = readRosHeader(in);
+  }
+  msg.latitude_deg = in.read<double>("latitude");
+  msg.longitude_deg = in.read<double>("longitude");
+  msg.altitude_m = in.read<double>("altitude");
+  return msg;
+}
+
 std::vector<RosTransformMsg> decodeTfMessage(std::span<const std::uint8_t> cdr,
                                              const std::string& source, const std::string& place) {
   CdrReader in(cdr, source, place);
@@ -366,11 +393,16 @@ std::vector<std::uint8_t> encodeNavSatFix(const NavSatFixMsg& msg) {
   writeHeader(out, msg.header);
   out.write(msg.status);
   out.write(msg.service);
-  out.write(msg.latitude_deg);
-  out.write(msg.longitude_deg);
-  out.write(msg.altitude_m);
+  writeLatLonAlt(out, msg.latitude_deg, msg.longitude_deg, msg.altitude_m);
   writeZeros(out, 9);
   out.write(std::uint8_t{0});
+  return out.bytes();
+}
+
+std::vector<std::uint8_t> encodeGeoPointStamped(const GeoPointMsg& msg) {
+  CdrWriter out;
+  writeHeader(out, msg.header);
+  writeLatLonAlt(out, msg.latitude_deg, msg.longitude_deg, msg.altitude_m);
   return out.bytes();
 }
 

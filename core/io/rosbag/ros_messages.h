@@ -5,7 +5,8 @@
 //   nav_msgs/msg/Odometry, geometry_msgs/msg/PoseStamped and PoseWithCovarianceStamped: the
 //     vehicle's pose;
 //   tf2_msgs/msg/TFMessage: transforms (the sonar's mounting, from /tf_static);
-//   sensor_msgs/msg/NavSatFix: the vehicle's WGS84 position (io/rosbag/bag_geofix.h).
+//   sensor_msgs/msg/NavSatFix: the vehicle's WGS84 position (io/rosbag/bag_geofix.h);
+//   geographic_msgs/msg/GeoPoint and GeoPointStamped: the mission origin (WGS84).
 // Decoding checks every length against the bytes left and throws Error naming the file, the
 // message and the CDR byte. Encoding (for the bag writer) writes little-endian CDR.
 #pragma once
@@ -20,7 +21,7 @@
 namespace sonarcarve {
 
 /// What a message type is to SonarCarve.
-enum class RosMessageKind { Other, SonarImage, VehiclePose, Transforms, GeoFix };
+enum class RosMessageKind { Other, SonarImage, VehiclePose, Transforms, GeoFix, GeoOrigin };
 
 /// True for the older acoustic_msgs/msg/SonarImage (azimuths instead of beam directions).
 bool isLegacySonarImage(std::string_view type);
@@ -36,6 +37,7 @@ inline constexpr const char* kProjectedSonarImageType =
 inline constexpr const char* kOdometryType = "nav_msgs/msg/Odometry";
 inline constexpr const char* kTfMessageType = "tf2_msgs/msg/TFMessage";
 inline constexpr const char* kNavSatFixType = "sensor_msgs/msg/NavSatFix";
+inline constexpr const char* kGeoPointStampedType = "geographic_msgs/msg/GeoPointStamped";
 
 struct RosHeader {
   std::int64_t stamp_ns = 0;  ///< builtin_interfaces/Time as nanoseconds
@@ -101,6 +103,16 @@ struct NavSatFixMsg {
 };
 inline constexpr std::int8_t kNavSatStatusNoFix = -1;
 
+/// geographic_msgs/msg/GeoPoint (float64 latitude, longitude in WGS84 degrees, altitude in
+/// metres, positive up), alone or as GeoPointStamped (std_msgs/Header header, GeoPoint
+/// position). Values as sent.
+struct GeoPointMsg {
+  RosHeader header;  ///< zero for a GeoPoint
+  double latitude_deg = 0.0;
+  double longitude_deg = 0.0;
+  double altitude_m = 0.0;
+};
+
 class CdrReader;
 /// A std_msgs/Header at the reader's place (stamp checked: nanoseconds below 10^9).
 RosHeader readRosHeader(CdrReader& in);
@@ -128,6 +140,9 @@ NavSatFixMsg decodeNavSatFix(std::span<const std::uint8_t> cdr, const std::strin
                              const std::string& place);
 std::vector<RosTransformMsg> decodeTfMessage(std::span<const std::uint8_t> cdr,
                                              const std::string& source, const std::string& place);
+/// GeoPoint or GeoPointStamped, by `type`.
+GeoPointMsg decodeGeoPoint(std::string_view type, std::span<const std::uint8_t> cdr,
+                           const std::string& source, const std::string& place);
 
 std::vector<std::uint8_t> encodeProjectedSonarImage(const ProjectedSonarImageMsg& msg);
 /// An Odometry message (zero twist and covariances).
@@ -135,6 +150,8 @@ std::vector<std::uint8_t> encodeOdometry(const RosPoseMsg& msg);
 /// A NavSatFix (covariance unknown: zeros, type 0).
 std::vector<std::uint8_t> encodeNavSatFix(const NavSatFixMsg& msg);
 std::vector<std::uint8_t> encodeTfMessage(const std::vector<RosTransformMsg>& transforms);
+/// A GeoPointStamped.
+std::vector<std::uint8_t> encodeGeoPointStamped(const GeoPointMsg& msg);
 
 /// The message definition text of a type as ROS 2 writes it into MCAP schemas ("ros2msg":
 /// the type's fields, then each dependency after a line of '=' and "MSG: pkg/Type").

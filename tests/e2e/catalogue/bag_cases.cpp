@@ -43,15 +43,18 @@ std::string unchanged(std::string bytes) {
 
 // The example mission on a transverse Mercator grid centred on 43 N, 3 E (crs: in its
 // mission.yaml) as bag.mcap with its positions as sensor_msgs/NavSatFix on /fix, fix k changed
-// by `change` (issue 43). The bag's reader places the fixes on their UTM zone, 31N.
+// by `change` (issue 43), and, given `origin`, its origin as a GeoPointStamped on /origin
+// changed by it. The bag's reader places the fixes on their UTM zone, 31N.
 using FixChange = std::function<void(NavSatFixMsg&, std::size_t)>;
-void writeFixBag(const Workspace& ws, const FixChange& change) {
+using OriginChange = std::function<void(GeoPointMsg&)>;
+void writeFixBag(const Workspace& ws, const FixChange& change, const OriginChange& origin = {}) {
   writeBytes(ws.mission() / "mission.yaml",
              readText(ws.mission() / "mission.yaml") +
                  "crs: +proj=tmerc +lat_0=43 +lon_0=3 +k=1 +x_0=0 +y_0=0 +datum=WGS84 "
                  "+units=m +type=crs\n");
   BagWriteOptions options;
   options.fix_topic = "/fix";
+  options.origin_topic = origin ? "/origin" : "";
   writeRosBag(readMission(ws.mission()), ws / "plain.mcap", options);
   const std::unique_ptr<RosBag> bag = openRosBag(ws / "plain.mcap");
   std::vector<BagTopicSpec> topics;
@@ -66,6 +69,10 @@ void writeFixBag(const Workspace& ws, const FixChange& change) {
       NavSatFixMsg fix = decodeNavSatFix(data, "plain.mcap", m.place);
       change(fix, k++);
       data = encodeNavSatFix(fix);
+    } else if (rosMessageKind(bag->topics()[m.topic].type) == RosMessageKind::GeoOrigin) {
+      GeoPointMsg point = decodeGeoPoint(bag->topics()[m.topic].type, data, "plain.mcap", m.place);
+      origin(point);
+      data = encodeGeoPointStamped(point);
     }
     messages.push_back({m.topic, m.receive_ns, std::move(data)});
   }
@@ -113,6 +120,28 @@ std::vector<CatalogueCase> bagCases() {
               {"bag.mcap: topic /fix: no usable sensor_msgs/NavSatFix of",
                "with status STATUS_NO_FIX", "expected fixes with finite latitude"},
               {"out"}),
+      // A GeoPointStamped origin (issue 43): the mission origin; one off the Earth is refused.
+      {.name = "GeoPointGivesTheOrigin",
+       .prepare =
+           [](const Workspace& ws) {
+             writeFixBag(
+                 ws, [](NavSatFixMsg&, std::size_t) {}, [](GeoPointMsg&) {});
+             return std::string("info bag.mcap");
+           },
+       .outcome = Outcome::Succeeds,
+       .message = {"origin topic /origin (geographic_msgs/msg/GeoPointStamped): the first of 1 "
+                   "points, on the grid of EPSG:32631"}},
+      {.name = "GeoPointOffTheEarth",
+       .prepare =
+           [](const Workspace& ws) {
+             writeFixBag(
+                 ws, [](NavSatFixMsg&, std::size_t) {},
+                 [](GeoPointMsg& p) { p.latitude_deg = 95.0; });
+             return std::string("reconstruct bag.mcap --out out");
+           },
+       .message = {"bag.mcap: topic /origin, message", "latitude 95",
+                   "expected finite WGS84 degrees within -90..90"},
+       .absent = {"out"}},
       bagCase("McapReadsAndReconstructs", BagFormat::Mcap, "bag.mcap", unchanged,
               "reconstruct bag.mcap --mesh false --out out", Outcome::Succeeds, {"denoising:"}),
       bagCase("McapInfoListsTheTopics", BagFormat::Mcap, "bag.mcap", unchanged, "info bag.mcap",

@@ -75,6 +75,7 @@ std::vector<CatalogueCase> failedRunCases();
 std::vector<CatalogueCase> recordedSonarCases();
 std::vector<CatalogueCase> pathCases();
 std::vector<CatalogueCase> mappedBoundCases();
+std::vector<CatalogueCase> holoOceanCases();
 
 // Inputs for the cases.
 /// Runs `sonarcarve-cli ARGS` in the workspace to make an input, and expects it to succeed.

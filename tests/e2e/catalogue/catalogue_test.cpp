@@ -31,6 +31,7 @@ INSTANTIATE_TEST_SUITE_P(RecordedSonar, Catalogue, ::testing::ValuesIn(recordedS
                          nameOf);
 INSTANTIATE_TEST_SUITE_P(Paths, Catalogue, ::testing::ValuesIn(pathCases()), nameOf);
 INSTANTIATE_TEST_SUITE_P(MappedBounds, Catalogue, ::testing::ValuesIn(mappedBoundCases()), nameOf);
+INSTANTIATE_TEST_SUITE_P(HoloOcean, Catalogue, ::testing::ValuesIn(holoOceanCases()), nameOf);
 
 }  // namespace
 }  // namespace sonarcarve::test
