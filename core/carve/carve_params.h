@@ -4,11 +4,14 @@
 #include <algorithm>
 
 #include <Eigen/Geometry>
+#include <memory>
 #include <optional>
 
 #include "common/angles.h"
 
 namespace sonarcarve {
+
+class SeabedHeightfield;  // carve/seabed_heightfield.h
 
 struct CarveParams {
   static constexpr double kDefaultVoxelSize_m = 0.02;
@@ -63,6 +66,9 @@ struct CarveParams {
   /// seabed's band where the pixel is lit and leaves what lies under it. Off: a flat seabed
   /// fills the main lobe at every range and the water over it is never carved.
   bool seabed_aware = true;
+  /// Seabed-aware: the seabed's relief fitted over the mission (carve/seabed_field_fit.h), used
+  /// in place of each frame's plane where it is known; null: the planes alone.
+  std::shared_ptr<const SeabedHeightfield> seabed_field;
 };
 
 /// The keep level a frame carves with. With exact dark pixels (whole counts, no detector) it

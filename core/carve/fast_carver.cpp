@@ -9,6 +9,8 @@
 #include <opencv2/imgproc.hpp>
 #include <optional>
 
+#include "carve/seabed_field_fit.h"
+#include "carve/seabed_heightfield.h"
 #include "carve/seabed_model.h"
 #include "carve/shadow_limit.h"
 #include "common/error.h"
@@ -391,9 +393,18 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
   if (params_.seabed_aware && frame.beam_aware) {
     seabed = seabed_.track(pixels, T_world_sonar, sonar, &pool_, before);
   }
+  // The relief where it departs from the frame's plane by more than half a range bin (the
+  // plane's own accuracy, noise-free): a flat seabed keeps its plane.
+  const SeabedHeightfield* relief =
+      seabed && params_.seabed_field &&
+              reliefDeparture({T_world_sonar, *seabed}, *params_.seabed_field, sonar) >
+                  0.5 * sonar.range().resolution_m
+          ? params_.seabed_field.get()
+          : nullptr;
   if (seabed) {
-    unexplained = explainSeabed(pixels, predictSeabedImage(*seabed, T_world_sonar, sonar, &pool_),
-                                kSeabedSlackBins, kSeabedHeadroom);
+    unexplained = explainSeabed(
+        pixels, predictSeabedImage(SeabedSurface{*seabed, relief}, T_world_sonar, sonar, &pool_),
+        kSeabedSlackBins, kSeabedHeadroom);
   }
 
   // Blocks of the map inside the frustum's bounding box.
@@ -436,9 +447,10 @@ IntegrateStats FastCarver::integrate(const cv::Mat& image, const Eigen::Isometry
     }
     const double limit_half = with_seabed.half_elevation_rad > 0.0 ? with_seabed.half_elevation_rad
                                                                    : 0.5 * sonar.verticalAperture();
-    seabed_bands = seabedBands(*seabed, T_world_sonar, sonar, with_seabed.elevation_bins,
-                               limit_half, with_seabed.elevation_step_rad, map_.voxelSize(),
-                               behind_detector ? kSeabedDoubtBehindDetector_m : 0.0);
+    seabed_bands =
+        seabedBands(SeabedSurface{*seabed, relief}, T_world_sonar, sonar,
+                    with_seabed.elevation_bins, limit_half, with_seabed.elevation_step_rad,
+                    map_.voxelSize(), behind_detector ? kSeabedDoubtBehindDetector_m : 0.0);
     with_seabed_limits =
         limit != nullptr
             ? *limit->first_return_m

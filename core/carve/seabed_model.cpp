@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 
+#include "carve/internal/seabed_rays.h"
 #include "common/angles.h"
 #include "common/quantile.h"
 #include "sonar/beam_pattern.h"
@@ -29,25 +30,17 @@ double SeabedPlane::depthAt(double north, double east) const {
 
 double seabedRange(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
                    const Eigen::Vector3d& direction_sonar) {
-  const Eigen::Vector3d d = T_world_sonar.linear() * direction_sonar;
-  const double towards = plane.normal.dot(d);  // < 0: the ray goes down into the seabed
-  const double height = plane.normal.dot(T_world_sonar.translation()) - plane.offset;
-  if (!(towards < -1e-9) || !(height > 0.0)) {
-    return std::numeric_limits<double>::infinity();
-  }
-  return height / -towards;
+  return SeabedSurface{plane}.rayRange(T_world_sonar.translation(),
+                                       T_world_sonar.linear() * direction_sonar);
 }
 
-namespace {
+namespace seabed_internal {
 
-// The unit ray of a beam at an elevation (up positive) in the sonar frame (x forward, y
-// starboard, z down).
 Eigen::Vector3d rayDirection(double elevation_rad, double bearing_rad) {
   return {std::cos(elevation_rad) * std::cos(bearing_rad),
           std::cos(elevation_rad) * std::sin(bearing_rad), -std::sin(elevation_rad)};
 }
 
-// Runs fn(i) for i in [0, count), on `pool` where given.
 void forEachBeam(ThreadPool* pool, std::size_t count, const std::function<void(std::size_t)>& fn) {
   if (pool == nullptr) {
     for (std::size_t i = 0; i < count; ++i) {
@@ -61,17 +54,6 @@ void forEachBeam(ThreadPool* pool, std::size_t count, const std::function<void(s
     }
   });
 }
-
-// The rays of some of a frame's beams, in the world, cut into elevation intervals over the
-// beam's traced pattern (to the second null): each interval's two ends and its centre, and
-// its weight (power x solid angle, cos(incidence) still to come).
-struct BeamRays {
-  std::vector<int> beams;
-  int intervals = 0;
-  std::vector<Eigen::Vector3d> ends;     // per beam intervals + 1
-  std::vector<Eigen::Vector3d> centres;  // per beam intervals
-  std::vector<double> weights;           // per interval
-};
 
 BeamRays beamRays(const SonarModel& sonar, const Eigen::Matrix3d& R, int beam_stride, double step,
                   ThreadPool* pool) {
@@ -105,6 +87,59 @@ BeamRays beamRays(const SonarModel& sonar, const Eigen::Matrix3d& R, int beam_st
   return rays;
 }
 
+void depositInterval(std::vector<float>& column, double r0, double r1, double weight,
+                     const RangeBins& bins) {
+  const int rows = static_cast<int>(column.size());
+  const double inv_res = 1.0 / bins.resolution_m;
+  double lo = (std::min(r0, r1) - bins.min_m) * inv_res;
+  double hi = (std::max(r0, r1) - bins.min_m) * inv_res;
+  if (hi < 0.0 || lo >= rows) {
+    return;
+  }
+  if (hi - lo < 1e-6) {
+    column[static_cast<std::size_t>(std::clamp(static_cast<int>(lo), 0, rows - 1))] +=
+        static_cast<float>(weight);
+    return;
+  }
+  const double density = weight / (hi - lo);
+  lo = std::max(lo, 0.0);
+  hi = std::min(hi, static_cast<double>(rows));
+  for (int b = static_cast<int>(lo); b < hi; ++b) {
+    const double overlap = std::min(hi, b + 1.0) - std::max(lo, static_cast<double>(b));
+    column[static_cast<std::size_t>(b)] += static_cast<float>(density * overlap);
+  }
+}
+
+void accumulateOnSurface(std::vector<float>& column, const BeamRays& rays, std::size_t i,
+                         const SeabedSurface& surface, const Eigen::Vector3d& position,
+                         const RangeBins& bins) {
+  const Eigen::Vector3d* ends = rays.ends.data() + i * (rays.intervals + 1);
+  const Eigen::Vector3d* centres = rays.centres.data() + i * rays.intervals;
+  double ra = surface.rayRange(position, ends[0]);
+  for (int k = 0; k < rays.intervals; ++k) {
+    const double rb = surface.rayRange(position, ends[k + 1]);
+    const double r_start = ra;
+    ra = rb;
+    const double rc = surface.rayRange(position, centres[k]);
+    if (!std::isfinite(rc)) {
+      continue;
+    }
+    const double tc = surface.upNormal(position + rc * centres[k]).dot(centres[k]);
+    if (!(tc < -1e-9)) {
+      continue;  // the relief faces away from the ray
+    }
+    const double weight = rays.weights[static_cast<std::size_t>(k)] * -tc;
+    depositInterval(column, std::isfinite(r_start) ? r_start : rc, std::isfinite(rb) ? rb : rc,
+                    weight, bins);
+  }
+}
+
+}  // namespace seabed_internal
+
+namespace {
+
+using namespace seabed_internal;
+
 double heightOver(const SeabedPlane& plane, const Eigen::Vector3d& sonar_position) {
   return plane.normal.dot(sonar_position) - plane.offset;
 }
@@ -114,10 +149,8 @@ double heightOver(const SeabedPlane& plane, const Eigen::Vector3d& sonar_positio
 // ends, as a surface spreads its return between two rays.
 void accumulateBeam(std::vector<float>& column, const BeamRays& rays, std::size_t i,
                     const SeabedPlane& plane, double height, const RangeBins& bins) {
-  const int rows = static_cast<int>(column.size());
   const Eigen::Vector3d* ends = rays.ends.data() + i * (rays.intervals + 1);
   const Eigen::Vector3d* centres = rays.centres.data() + i * rays.intervals;
-  const double inv_res = 1.0 / bins.resolution_m;
   double ta = plane.normal.dot(ends[0]);
   for (int k = 0; k < rays.intervals; ++k) {
     const double tb = plane.normal.dot(ends[k + 1]);
@@ -131,23 +164,7 @@ void accumulateBeam(std::vector<float>& column, const BeamRays& rays, std::size_
     const double rc = height / -tc;
     const double r0 = t_start < -1e-9 ? height / -t_start : rc;
     const double r1 = tb < -1e-9 ? height / -tb : rc;
-    double lo = (std::min(r0, r1) - bins.min_m) * inv_res;
-    double hi = (std::max(r0, r1) - bins.min_m) * inv_res;
-    if (hi < 0.0 || lo >= rows) {
-      continue;
-    }
-    if (hi - lo < 1e-6) {
-      column[static_cast<std::size_t>(std::clamp(static_cast<int>(lo), 0, rows - 1))] +=
-          static_cast<float>(weight);
-      continue;
-    }
-    const double density = weight / (hi - lo);
-    lo = std::max(lo, 0.0);
-    hi = std::min(hi, static_cast<double>(rows));
-    for (int b = static_cast<int>(lo); b < hi; ++b) {
-      const double overlap = std::min(hi, b + 1.0) - std::max(lo, static_cast<double>(b));
-      column[static_cast<std::size_t>(b)] += static_cast<float>(density * overlap);
-    }
+    depositInterval(column, r0, r1, weight, bins);
   }
 }
 
@@ -186,6 +203,23 @@ cv::Mat predictSeabedImage(const SeabedPlane& plane, const Eigen::Isometry3d& T_
                            const SonarModel& sonar, ThreadPool* pool) {
   const BeamRays rays = beamRays(sonar, T_world_sonar.linear(), 1, kPredictionStep_rad, pool);
   return predictedImage(rays, plane, T_world_sonar.translation(), sonar, pool);
+}
+
+cv::Mat predictSeabedImage(const SeabedSurface& surface, const Eigen::Isometry3d& T_world_sonar,
+                           const SonarModel& sonar, ThreadPool* pool) {
+  if (surface.field == nullptr) {
+    return predictSeabedImage(surface.plane, T_world_sonar, sonar, pool);
+  }
+  const BeamRays rays = beamRays(sonar, T_world_sonar.linear(), 1, kPredictionStep_rad, pool);
+  cv::Mat image = cv::Mat::zeros(sonar.rows(), sonar.cols(), CV_32F);
+  forEachBeam(pool, rays.beams.size(), [&](std::size_t i) {
+    std::vector<float> column(static_cast<std::size_t>(sonar.rows()), 0.0f);
+    accumulateOnSurface(column, rays, i, surface, T_world_sonar.translation(), sonar.range());
+    for (int r = 0; r < sonar.rows(); ++r) {
+      image.at<float>(r, rays.beams[i]) = column[static_cast<std::size_t>(r)];
+    }
+  });
+  return image;
 }
 
 namespace {
@@ -591,24 +625,30 @@ cv::Mat explainSeabed(const cv::Mat& pixels, const cv::Mat& predicted, int slack
   return pixels - explained;
 }
 
-SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
+SeabedBands seabedBands(const SeabedSurface& surface, const Eigen::Isometry3d& T_world_sonar,
                         const SonarModel& sonar, int bins, double half, double step,
                         double voxel_size, double doubt_m) {
   const auto rays = static_cast<std::size_t>(sonar.cols()) * static_cast<std::size_t>(bins);
   SeabedBands out{std::vector<float>(rays, std::numeric_limits<float>::infinity()),
                   std::vector<float>(rays, std::numeric_limits<float>::infinity()),
                   std::vector<float>(rays, std::numeric_limits<float>::infinity())};
-  const Eigen::Vector3d up = T_world_sonar.linear().transpose() * plane.normal;  // sonar frame
+  const Eigen::Matrix3d& R = T_world_sonar.linear();
+  const Eigen::Vector3d& position = T_world_sonar.translation();
+  const Eigen::Vector3d plane_up = R.transpose() * surface.plane.normal;  // sonar frame
   for (int b = 0; b < sonar.cols(); ++b) {
     const double bearing = sonar.bearings().centre(b);
     for (int k = 0; k < bins; ++k) {
       const double el = -half + (k + 0.5) * step;
       const Eigen::Vector3d dir = rayDirection(el, bearing);
-      const double range = seabedRange(plane, T_world_sonar, dir);
+      const double range = surface.rayRange(position, R * dir);
       if (!std::isfinite(range)) {
         continue;
       }
-      // A voxel's centre lies within its half diagonal of the plane where the ray meets it,
+      const Eigen::Vector3d up =
+          surface.field == nullptr
+              ? plane_up
+              : Eigen::Vector3d(R.transpose() * surface.upNormal(position + range * (R * dir)));
+      // A voxel's centre lies within its half diagonal of the seabed where the ray meets it,
       // which along a ray at grazing incidence spans more range (sine of the grazing angle,
       // floored at 0.1: 5.7 degrees).
       const double sine = std::max(0.1, -up.dot(dir));
@@ -621,6 +661,13 @@ SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_wor
     }
   }
   return out;
+}
+
+SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
+                        const SonarModel& sonar, int bins, double half, double step,
+                        double voxel_size, double doubt_m) {
+  return seabedBands(SeabedSurface{plane}, T_world_sonar, sonar, bins, half, step, voxel_size,
+                     doubt_m);
 }
 
 std::optional<SeabedPlane> SeabedTracker::track(const cv::Mat& pixels,

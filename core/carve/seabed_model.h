@@ -33,11 +33,16 @@ struct SeabedPlane {
   double depthAt(double north, double east) const;
 };
 
+struct SeabedSurface;  // carve/seabed_heightfield.h: a plane and, where known, the relief
+
 /// The seabed's image in one frame, up to a scale: per pixel, the sum over elevation of the
 /// beam's power, the ray's solid angle and cos(incidence) for the rays that meet the plane in
 /// that pixel's range bin and beam. CV_32F, the sonar's rows x cols.
 /// Its beams run on `pool` where given.
 cv::Mat predictSeabedImage(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
+                           const SonarModel& sonar, ThreadPool* pool = nullptr);
+/// The same over a seabed with relief where it is known.
+cv::Mat predictSeabedImage(const SeabedSurface& surface, const Eigen::Isometry3d& T_world_sonar,
                            const SonarModel& sonar, ThreadPool* pool = nullptr);
 
 /// The range along a ray (sonar frame, unit `direction`) at which it meets the plane, or +inf.
@@ -106,6 +111,11 @@ struct SeabedBands {
   std::vector<float> doubt_from;  ///< from, less `doubt_m` over the plane along the ray
 };
 SeabedBands seabedBands(const SeabedPlane& plane, const Eigen::Isometry3d& T_world_sonar,
+                        const SonarModel& sonar, int bins, double half, double step,
+                        double voxel_size, double doubt_m = 0.0);
+/// The same over a seabed with relief where it is known (the band's width along each ray from
+/// the relief's own normal there).
+SeabedBands seabedBands(const SeabedSurface& surface, const Eigen::Isometry3d& T_world_sonar,
                         const SonarModel& sonar, int bins, double half, double step,
                         double voxel_size, double doubt_m = 0.0);
 

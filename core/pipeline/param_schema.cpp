@@ -251,6 +251,15 @@ std::vector<ParamSpec> makeSchema() {
        .gui = {.group = "Carving", .label = "Seabed-aware carving", .advanced = true},
        .access = field([](auto& p) -> auto& { return p.carve.seabed_aware; }),
        .applies = usesFastEngine},
+      {.key = "fit_seabed_relief",
+       .help = "fast engine, seabed-aware: before carving, the seabed the frames image is fitted "
+               "as a heightfield over the mission (every 0.2 m), and each frame's seabed is "
+               "explained by its relief instead of one plane a frame (experimental: it gains "
+               "over relief and loses over a flat seabed with objects); false: a plane a frame",
+       .flag = "--fit-seabed-relief",
+       .gui = {.group = "Carving", .label = "Seabed relief", .advanced = true},
+       .access = field([](auto& p) -> auto& { return p.seabed_relief; }),
+       .applies = usesFastEngine},
       {.key = "voxel_size_m",
        .unit = "m",
        .range = {.min = 0.0, .max = kMaxVoxelSize_m, .min_open = true},

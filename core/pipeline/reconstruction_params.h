@@ -75,6 +75,10 @@ struct ReconstructionParams {
   /// carved alone too, and what each keeps that the others carved at grazing incidence set
   /// back (pipeline/sector_restore.h).
   bool heading_sectors = true;
+  /// Fast engine, seabed-aware: the seabed's relief fitted over the mission before carving,
+  /// which explains each frame's seabed in place of its plane (carve/seabed_field_fit.h).
+  /// Off by default: on a flat seabed with objects it cost F (docs/reconstruction.md).
+  bool seabed_relief = false;
   /// Fast engine: each frame aligned to the map carved so far before it carves (issue 15).
   PoseRefinementParams pose_refinement;
   /// Fast engine, experimental: the carved map fitted to the frames (fit/map_fit.h).

@@ -12,19 +12,11 @@
 namespace sonarcarve {
 namespace {
 
+using test::hasChoice;
 using test::quoted;
 using test::runCli;
 
 constexpr double kVoxel_m = 0.02;  // the default voxel size
-
-bool hasChoice(const nlohmann::json& report, const std::string& name) {
-  for (const auto& choice : report.at("choices")) {
-    if (choice.at("name") == name) {
-      return true;
-    }
-  }
-  return false;
-}
 
 TEST(HeadingSectorsRun, TwoDescentsKeepMoreOfWhatEachSeesHeadOn) {
   test::ScratchDir dir;

@@ -52,6 +52,15 @@ double evaluatedFscore(const std::filesystem::path& reference, const std::filesy
                                   : std::numeric_limits<double>::quiet_NaN();
 }
 
+bool hasChoice(const nlohmann::json& report, const std::string& name) {
+  for (const auto& choice : report.at("choices")) {
+    if (choice.at("name") == name) {
+      return true;
+    }
+  }
+  return false;
+}
+
 nlohmann::json readJsonFile(const std::filesystem::path& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);

@@ -18,6 +18,8 @@ RunResult runCli(const std::string& args);
 RunResult runShell(const std::string& command);
 /// A JSON file a run wrote (report.json, manifest.json), parsed.
 nlohmann::json readJsonFile(const std::filesystem::path& path);
+/// Whether a report.json's `choices` hold one named `name`.
+bool hasChoice(const nlohmann::json& report, const std::string& name);
 /// The scores of `evaluate --json` for a reconstruction's points against a reference mesh and
 /// its visible points; {"error": what evaluate printed} if it failed.
 nlohmann::json evaluateRun(const std::filesystem::path& reference,

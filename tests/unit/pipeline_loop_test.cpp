@@ -88,8 +88,8 @@ TEST(PipelineLoop, StandardStagesRunInOrder) {
   ThreadPool pool(2);
   Pipeline pipeline(mission, quick(), pool);
   EXPECT_EQ(pipeline.stageNames(),
-            (std::vector<std::string>{"read", "denoise", "beam check", "choose", "carve",
-                                      "heading sectors", "surface", "mesh"}));
+            (std::vector<std::string>{"read", "denoise", "beam check", "choose", "seabed relief",
+                                      "carve", "heading sectors", "surface", "mesh"}));
   std::filesystem::path out = "/nonexistent";
   pipeline.writeOutputsTo({out, {}, false, {}, {}});
   EXPECT_EQ(pipeline.stageNames().back(), "export");
@@ -101,7 +101,7 @@ TEST(PipelineLoop, AToyStageAddedInOneLineRunsWhereItIsPut) {
   ThreadPool pool(2);
   Pipeline pipeline(mission, quick(), pool);
   pipeline.addStage(std::make_shared<CountCarvedFrames>(), "carve");
-  EXPECT_EQ(pipeline.stageNames()[5], "count");
+  EXPECT_EQ(pipeline.stageNames()[6], "count");
   OverallRecorder progress;
   const ReconstructionResult result = pipeline.run(progress);
   const RunChoice* toy = findChoice(result.choices, "toy");

@@ -3,8 +3,9 @@
 namespace sonarcarve {
 
 std::vector<std::shared_ptr<const Stage>> standardStages() {
-  return {makeReadStage(),  makeDenoiseStage(), makeBeamCheckStage(), makeChooseStage(),
-          makeCarveStage(), makeSectorStage(),  makeSurfaceStage(),   makeMeshStage()};
+  return {makeReadStage(),   makeDenoiseStage(),      makeBeamCheckStage(),
+          makeChooseStage(), makeSeabedReliefStage(), makeCarveStage(),
+          makeSectorStage(), makeSurfaceStage(),      makeMeshStage()};
 }
 
 }  // namespace sonarcarve

@@ -1,6 +1,6 @@
 // The pipeline's stages, each in a file of its own here (pipeline/stage.h), in the order a
-// run takes them: read -> denoise -> beam check -> choose -> carve -> surface -> mesh, then, for a
-// run that writes its outputs to a folder, report -> export.
+// run takes them: read -> denoise -> beam check -> choose -> seabed relief -> carve -> surface ->
+// mesh, then, for a run that writes its outputs to a folder, report -> export.
 #pragma once
 
 #include <filesystem>
@@ -19,6 +19,8 @@ std::unique_ptr<Stage> makeReadStage();
 std::unique_ptr<Stage> makeDenoiseStage();
 std::unique_ptr<Stage> makeBeamCheckStage();
 std::unique_ptr<Stage> makeChooseStage();
+/// seabed relief: the seabed's heightfield fitted to the frames, for carving (before carve).
+std::unique_ptr<Stage> makeSeabedReliefStage();
 std::unique_ptr<Stage> makeCarveStage();
 std::unique_ptr<Stage> makeSectorStage();
 std::unique_ptr<Stage> makeSurfaceStage();
