@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <numbers>
 #include <utility>
 
@@ -104,45 +103,30 @@ BeamMisfit beamMisfit(const cv::Mat& pixels, const float* structure, const BeamR
   for (std::size_t k = 0; k <= n; ++k) {
     hits[k] = hitEnd(surface, position, ends[k]);
   }
-  // The intervals as accumulateOnSurface deposits them.
-  struct Interval {
-    double r0, r1, weight;
-    bool own0, own1;  // whether the end's range is its own (not the centre's)
-    bool on_field;    // whether the weight's cos(incidence) is the relief's
-    std::size_t centre_nodes[4];
-    double dweight_dnode[4];
+  // The intervals as accumulateOnSurface deposits them, and how each one's weight moves with
+  // the nodes of the cell its centre meets.
+  struct Interval : SurfaceInterval {
+    bool on_field = false;  // whether the weight's cos(incidence) is the relief's
+    std::size_t centre_nodes[4] = {0, 0, 0, 0};
+    double dweight_dnode[4] = {0.0, 0.0, 0.0, 0.0};
   };
+  std::vector<double> end_ranges(n + 1);
+  for (std::size_t k = 0; k <= n; ++k) {
+    end_ranges[k] = hits[k].range;
+  }
   std::vector<Interval> intervals;
   intervals.reserve(n);
-  std::vector<std::size_t> interval_k;
   std::vector<float> column(static_cast<std::size_t>(rows), 0.0f);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double rc = surface.rayRange(position, centres[k]);
-    if (!std::isfinite(rc)) {
-      continue;
-    }
-    const Eigen::Vector3d c = position + rc * centres[k];
-    const double tc = surface.upNormal(c).dot(centres[k]);
-    if (!(tc < -1e-9)) {
-      continue;
-    }
-    const double weight = rays.weights[k] * -tc;
-    const bool own0 = std::isfinite(hits[k].range);
-    const bool own1 = std::isfinite(hits[k + 1].range);
-    Interval iv{own0 ? hits[k].range : rc,
-                own1 ? hits[k + 1].range : rc,
-                weight,
-                own0,
-                own1,
-                false,
-                {},
-                {}};
+  for (const SurfaceInterval& base : surfaceIntervals(rays, i, surface, position, end_ranges)) {
+    Interval iv;
+    static_cast<SurfaceInterval&>(iv) = base;
+    const Eigen::Vector3d& c = base.centre_hit;
     if (want_gradient && surface.field != nullptr && surface.field->covers(c.x(), c.y())) {
       // cos(incidence) = -n . d, n = (gn, ge, -1) / |.|, (gn, ge) the relief's gradient there,
       // which each of the cell's nodes moves linearly.
       Eigen::Vector2d g;
       surface.field->depthAt(c.x(), c.y(), &g);
-      const Eigen::Vector3d& d = centres[k];
+      const Eigen::Vector3d& d = centres[base.k];
       const double norm = std::sqrt(g.squaredNorm() + 1.0);
       const double a = g.x() * d.x() + g.y() * d.y() - d.z();
       const double dcos_dn = -d.x() / norm + a * g.x() / (norm * norm * norm);
@@ -150,13 +134,12 @@ BeamMisfit beamMisfit(const cv::Mat& pixels, const float* structure, const BeamR
       double d_north[4], d_east[4];
       surface.field->gradientStencil(c.x(), c.y(), iv.centre_nodes, d_north, d_east);
       for (int s = 0; s < 4; ++s) {
-        iv.dweight_dnode[s] = rays.weights[k] * (dcos_dn * d_north[s] + dcos_de * d_east[s]);
+        iv.dweight_dnode[s] = rays.weights[base.k] * (dcos_dn * d_north[s] + dcos_de * d_east[s]);
       }
       iv.on_field = true;
     }
     depositInterval(column, iv.r0, iv.r1, iv.weight, bins);
     intervals.push_back(iv);
-    interval_k.push_back(k);
   }
   // The beam's own gain over the pixels that are not structure's.
   const auto isUsed = [&](int r) { return !(pixels.at<float>(r, beam) > structure[r]); };
@@ -201,7 +184,7 @@ BeamMisfit beamMisfit(const cv::Mat& pixels, const float* structure, const BeamR
     if (hi < 0.0 || lo >= rows) {
       continue;
     }
-    const std::size_t k = interval_k[m];
+    const std::size_t k = iv.k;
     const bool first_is_lo = iv.r0 <= iv.r1;
     const EndHit* lo_end =
         first_is_lo ? (iv.own0 ? &hits[k] : nullptr) : (iv.own1 ? &hits[k + 1] : nullptr);

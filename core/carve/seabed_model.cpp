@@ -110,27 +110,46 @@ void depositInterval(std::vector<float>& column, double r0, double r1, double we
   }
 }
 
-void accumulateOnSurface(std::vector<float>& column, const BeamRays& rays, std::size_t i,
-                         const SeabedSurface& surface, const Eigen::Vector3d& position,
-                         const RangeBins& bins) {
-  const Eigen::Vector3d* ends = rays.ends.data() + i * (rays.intervals + 1);
+std::vector<SurfaceInterval> surfaceIntervals(const BeamRays& rays, std::size_t i,
+                                              const SeabedSurface& surface,
+                                              const Eigen::Vector3d& position,
+                                              const std::vector<double>& end_ranges) {
   const Eigen::Vector3d* centres = rays.centres.data() + i * rays.intervals;
-  double ra = surface.rayRange(position, ends[0]);
-  for (int k = 0; k < rays.intervals; ++k) {
-    const double rb = surface.rayRange(position, ends[k + 1]);
-    const double r_start = ra;
-    ra = rb;
+  std::vector<SurfaceInterval> out;
+  out.reserve(static_cast<std::size_t>(rays.intervals));
+  for (std::size_t k = 0; k < static_cast<std::size_t>(rays.intervals); ++k) {
     const double rc = surface.rayRange(position, centres[k]);
     if (!std::isfinite(rc)) {
       continue;
     }
-    const double tc = surface.upNormal(position + rc * centres[k]).dot(centres[k]);
+    const Eigen::Vector3d c = position + rc * centres[k];
+    const double tc = surface.upNormal(c).dot(centres[k]);
     if (!(tc < -1e-9)) {
       continue;  // the relief faces away from the ray
     }
-    const double weight = rays.weights[static_cast<std::size_t>(k)] * -tc;
-    depositInterval(column, std::isfinite(r_start) ? r_start : rc, std::isfinite(rb) ? rb : rc,
-                    weight, bins);
+    SurfaceInterval iv;
+    iv.k = k;
+    iv.own0 = std::isfinite(end_ranges[k]);
+    iv.own1 = std::isfinite(end_ranges[k + 1]);
+    iv.r0 = iv.own0 ? end_ranges[k] : rc;
+    iv.r1 = iv.own1 ? end_ranges[k + 1] : rc;
+    iv.weight = rays.weights[k] * -tc;
+    iv.centre_hit = c;
+    out.push_back(iv);
+  }
+  return out;
+}
+
+void accumulateOnSurface(std::vector<float>& column, const BeamRays& rays, std::size_t i,
+                         const SeabedSurface& surface, const Eigen::Vector3d& position,
+                         const RangeBins& bins) {
+  const Eigen::Vector3d* ends = rays.ends.data() + i * (rays.intervals + 1);
+  std::vector<double> end_ranges(static_cast<std::size_t>(rays.intervals) + 1);
+  for (std::size_t k = 0; k < end_ranges.size(); ++k) {
+    end_ranges[k] = surface.rayRange(position, ends[k]);
+  }
+  for (const SurfaceInterval& iv : surfaceIntervals(rays, i, surface, position, end_ranges)) {
+    depositInterval(column, iv.r0, iv.r1, iv.weight, bins);
   }
 }
 

@@ -41,6 +41,23 @@ BeamRays beamRays(const SonarModel& sonar, const Eigen::Matrix3d& R, int beam_st
 void depositInterval(std::vector<float>& column, double r0, double r1, double weight,
                      const RangeBins& bins);
 
+/// One elevation interval of a beam over a surface: the ranges of its ends (the centre's where
+/// an end misses the surface: `own0`, `own1` false), its weight times cos(incidence) there, and
+/// the point where its centre meets the surface.
+struct SurfaceInterval {
+  std::size_t k = 0;  ///< the interval's index in the beam
+  double r0 = 0.0, r1 = 0.0, weight = 0.0;
+  bool own0 = false, own1 = false;
+  Eigen::Vector3d centre_hit = Eigen::Vector3d::Zero();
+};
+
+/// The intervals of beam i of `rays` from `position` that meet `surface` facing the ray, given
+/// the ranges of its interval ends (`end_ranges`, intervals + 1 of them, +inf where they miss).
+std::vector<SurfaceInterval> surfaceIntervals(const BeamRays& rays, std::size_t i,
+                                              const SeabedSurface& surface,
+                                              const Eigen::Vector3d& position,
+                                              const std::vector<double>& end_ranges);
+
 /// Adds beam i of `rays` seen from `position` over `surface` to `column`: each interval's
 /// weight times cos(incidence) on the surface, spread between the ranges of its ends.
 void accumulateOnSurface(std::vector<float>& column, const BeamRays& rays, std::size_t i,
